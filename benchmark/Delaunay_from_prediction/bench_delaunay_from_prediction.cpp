@@ -1,0 +1,974 @@
+// Copyright (c) 2026 Delaunay_from_prediction contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Author(s): Delaunay_from_prediction founding team
+//
+// Benchmark of delaunay_from_prediction() and make_delaunay() against CGAL's own
+// Delaunay_triangulation_2 built from scratch (range insert, which spatial-sorts first), timed
+// in the same run, on the same points, with the same triangulation type
+// (plain CGAL::Delaunay_triangulation_2<Epick>), one thread, CGAL::Real_timer (wall clock),
+// median of --reps repetitions, fixed seeds.
+//
+// Cases (--cases, by name):
+//   shuffled  D = 0: the Delaunay faces, list shuffled, each triple rotated at random; points in
+//             random order.
+//   hilbert   D = 0, coherent input: points Hilbert-sorted, faces in the order CGAL's own DT of
+//             the sorted points iterates them. CGAL's reference is built from the sorted points.
+//   flips     k random flips (0.1%, 1%, 10% of n) of strictly convex interior quadrilaterals in a
+//             copy of the DT, faces exported in random order.
+//   move      make_delaunay() on a CGAL DT whose every point was moved by sigma x (mean
+//             nearest-neighbour distance) in a random direction; only the call is timed.
+//             CGAL's reference is a from-scratch build of the moved points.
+//   random    2n-5 random index triples (distinct indices) as a prediction.
+//   memory    peak heap bytes of the `shuffled` call vs CGAL's from-scratch build.
+//
+// Every result of ours is compared with CGAL's (vertex and face counts and an order-independent
+// hash of the face set as sorted coordinate triples), outside the timers; a mismatch prints
+// "CHECK FAILED" and makes the program exit with status 1.
+//
+// Usage: bench_delaunay_from_prediction [--n 100000,1000000] [--reps 3]
+//          [--cases shuffled,hilbert,flips,move,random,memory] [--dist uniform,clustered]
+//          [--csv FILE] [--malloc keep|default] [--seed S]
+
+#include <CGAL/Delaunay_from_prediction_2.h>
+
+#include <CGAL/Delaunay_triangulation_2.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Real_timer.h>
+#include <CGAL/Triangulation_vertex_base_with_info_2.h>
+#include <CGAL/hilbert_sort.h>
+#include <CGAL/version.h>
+
+#include <malloc.h>
+#include <sched.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <ctime>
+#include <fstream>
+#include <iomanip>
+#include <iostream>
+#include <limits>
+#include <new>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <utility>
+#include <vector>
+
+// ---------------------------------------------------------------------------------------------
+// Memory measurement: a counting global operator new/delete.
+//
+// Every C++ allocation of the process (CGAL's Compact_container blocks, std::vector buffers of
+// CGAL's spatial sort and of our import, ...) goes through these operators. They allocate with
+// malloc and keep the number of bytes currently held (malloc_usable_size of each block) and its
+// high-water mark. The peak of a call is (high-water mark during the call) - (bytes held when it
+// started): the largest amount of heap the call itself held at once, its result included, the
+// caller's inputs excluded. Unlike ru_maxrss this does not depend on which pages glibc has
+// already faulted in or kept (the "keep" allocator policy below never returns memory, so a
+// forked child reusing the parent's free heap would show no RSS growth at all), and it is exact
+// and repeatable. It does not see malloc's own bookkeeping or memory obtained with plain malloc
+// (CGAL and this package use none on these paths; GMP is never reached with Epick on these
+// inputs). Single thread, so plain counters.
+namespace counting {
+std::size_t current_bytes = 0;
+std::size_t peak_bytes = 0;
+
+inline void account(void* p)
+{
+  current_bytes += malloc_usable_size(p);
+  if(current_bytes > peak_bytes)
+    peak_bytes = current_bytes;
+}
+inline void* allocate(std::size_t size)
+{
+  void* p = std::malloc(size == 0 ? 1 : size);
+  if(p == nullptr)
+    throw std::bad_alloc();
+  account(p);
+  return p;
+}
+inline void* allocate_aligned(std::size_t size, std::size_t alignment)
+{
+  if(alignment < sizeof(void*))
+    alignment = sizeof(void*);
+  void* p = nullptr;
+  if(posix_memalign(&p, alignment, size == 0 ? 1 : size) != 0)
+    throw std::bad_alloc();
+  account(p);
+  return p;
+}
+inline void release(void* p) noexcept
+{
+  if(p == nullptr)
+    return;
+  current_bytes -= malloc_usable_size(p);
+  std::free(p);
+}
+
+// Measures the heap peak of one scope, relative to what is held when it starts.
+struct Peak_scope
+{
+  std::size_t base;
+  Peak_scope() : base(current_bytes) { peak_bytes = current_bytes; }
+  std::size_t bytes() const { return peak_bytes - base; }
+};
+} // namespace counting
+
+void* operator new(std::size_t size) { return counting::allocate(size); }
+void* operator new[](std::size_t size) { return counting::allocate(size); }
+void* operator new(std::size_t size, const std::nothrow_t&) noexcept
+{
+  try { return counting::allocate(size); } catch(...) { return nullptr; }
+}
+void* operator new[](std::size_t size, const std::nothrow_t&) noexcept
+{
+  try { return counting::allocate(size); } catch(...) { return nullptr; }
+}
+void* operator new(std::size_t size, std::align_val_t a) { return counting::allocate_aligned(size, std::size_t(a)); }
+void* operator new[](std::size_t size, std::align_val_t a) { return counting::allocate_aligned(size, std::size_t(a)); }
+void operator delete(void* p) noexcept { counting::release(p); }
+void operator delete[](void* p) noexcept { counting::release(p); }
+void operator delete(void* p, std::size_t) noexcept { counting::release(p); }
+void operator delete[](void* p, std::size_t) noexcept { counting::release(p); }
+void operator delete(void* p, const std::nothrow_t&) noexcept { counting::release(p); }
+void operator delete[](void* p, const std::nothrow_t&) noexcept { counting::release(p); }
+void operator delete(void* p, std::align_val_t) noexcept { counting::release(p); }
+void operator delete[](void* p, std::align_val_t) noexcept { counting::release(p); }
+void operator delete(void* p, std::size_t, std::align_val_t) noexcept { counting::release(p); }
+void operator delete[](void* p, std::size_t, std::align_val_t) noexcept { counting::release(p); }
+
+namespace {
+
+namespace DFP = CGAL::Delaunay_from_prediction;
+
+using K = CGAL::Exact_predicates_inexact_constructions_kernel;
+using Point = K::Point_2;
+using DT = CGAL::Delaunay_triangulation_2<K>; // timed, for CGAL and for us
+// Set-up only (exporting faces as point indices): the same triangulation, with the index in info.
+using Info_vb = CGAL::Triangulation_vertex_base_with_info_2<std::uint32_t, K>;
+using Info_tds = CGAL::Triangulation_data_structure_2<Info_vb>;
+using DTI = CGAL::Delaunay_triangulation_2<K, Info_tds>;
+using Face = std::array<std::uint32_t, 3>;
+
+// ---------------------------------------------------------------------------------------------
+// Random numbers: our own generator and distributions, so the inputs are the same with any
+// standard library.
+struct Rng
+{
+  std::uint64_t state;
+  explicit Rng(std::uint64_t seed) : state(seed) {}
+  std::uint64_t next()
+  {
+    std::uint64_t z = (state += 0x9e3779b97f4a7c15ull);
+    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
+    z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
+    return z ^ (z >> 31);
+  }
+  double uniform() { return double(next() >> 11) * 0x1.0p-53; } // [0, 1)
+  std::size_t below(std::size_t m)                               // [0, m), unbiased
+  {
+    const std::uint64_t limit = std::numeric_limits<std::uint64_t>::max() -
+                                std::numeric_limits<std::uint64_t>::max() % m;
+    std::uint64_t r;
+    do r = next(); while(r >= limit);
+    return std::size_t(r % m);
+  }
+  double normal() // Box-Muller
+  {
+    double u = uniform();
+    while(u <= 0.)
+      u = uniform();
+    return std::sqrt(-2. * std::log(u)) * std::cos(2. * M_PI * uniform());
+  }
+};
+
+std::uint64_t mix(std::uint64_t x)
+{
+  x = (x ^ (x >> 33)) * 0xff51afd7ed558ccdull;
+  x = (x ^ (x >> 33)) * 0xc4ceb9fe1a85ec53ull;
+  return x ^ (x >> 33);
+}
+std::uint64_t bits(double d)
+{
+  std::uint64_t b;
+  std::memcpy(&b, &d, sizeof b);
+  return b;
+}
+std::uint64_t seed_for(std::uint64_t base, const std::string& what, std::size_t n)
+{
+  std::uint64_t h = mix(base ^ 0x1234567ull) ^ mix(n + 17);
+  for(char c : what)
+    h = mix(h ^ std::uint64_t(static_cast<unsigned char>(c)));
+  return h;
+}
+
+template <class T>
+void shuffle(std::vector<T>& v, Rng& rng)
+{
+  for(std::size_t i = v.size(); i > 1; --i)
+    std::swap(v[i - 1], v[rng.below(i)]);
+}
+
+// ---------------------------------------------------------------------------------------------
+// Inputs.
+std::vector<Point> make_points(const std::string& dist, std::size_t n, std::uint64_t seed)
+{
+  Rng rng(seed_for(seed, "points/" + dist, n));
+  std::vector<Point> points;
+  points.reserve(n);
+  if(dist == "uniform") {
+    for(std::size_t i = 0; i < n; ++i) {
+      const double x = rng.uniform();
+      points.emplace_back(x, rng.uniform());
+    }
+  } else { // clustered: 64 gaussian blobs, centres in [0.1, 0.9]^2, std dev in [0.005, 0.035]
+    constexpr int blobs = 64;
+    double cx[blobs], cy[blobs], sd[blobs];
+    for(int b = 0; b < blobs; ++b) {
+      cx[b] = 0.1 + 0.8 * rng.uniform();
+      cy[b] = 0.1 + 0.8 * rng.uniform();
+      sd[b] = 0.005 + 0.03 * rng.uniform();
+    }
+    for(std::size_t i = 0; i < n; ++i) {
+      const int b = int(rng.below(blobs));
+      const double x = cx[b] + sd[b] * rng.normal();
+      points.emplace_back(x, cy[b] + sd[b] * rng.normal());
+    }
+  }
+  return points;
+}
+
+// Number of points equal to an earlier one (the checks assume none; reported if any).
+std::size_t count_duplicates(const std::vector<Point>& points)
+{
+  std::vector<std::pair<double, double>> xy(points.size());
+  for(std::size_t i = 0; i < points.size(); ++i)
+    xy[i] = {points[i].x(), points[i].y()};
+  std::sort(xy.begin(), xy.end());
+  return std::size_t(xy.end() - std::unique(xy.begin(), xy.end()));
+}
+
+DTI build_indexed(const std::vector<Point>& points)
+{
+  std::vector<std::pair<Point, std::uint32_t>> with_index(points.size());
+  for(std::size_t i = 0; i < points.size(); ++i)
+    with_index[i] = {points[i], std::uint32_t(i)};
+  return DTI(with_index.begin(), with_index.end());
+}
+
+// Finite faces as point-index triples, in the order the triangulation iterates them.
+std::vector<Face> export_faces(const DTI& t)
+{
+  std::vector<Face> faces;
+  faces.reserve(t.number_of_faces());
+  for(auto f = t.finite_faces_begin(); f != t.finite_faces_end(); ++f)
+    faces.push_back({f->vertex(0)->info(), f->vertex(1)->info(), f->vertex(2)->info()});
+  return faces;
+}
+
+// Random order of the list, random rotation of each triple (orientation kept).
+void shuffle_faces(std::vector<Face>& faces, Rng& rng)
+{
+  shuffle(faces, rng);
+  for(Face& f : faces) {
+    const std::size_t r = rng.below(3);
+    std::rotate(f.begin(), f.begin() + std::ptrdiff_t(r), f.end());
+  }
+}
+
+// Flips k random interior edges of `t` whose quadrilateral is strictly convex. Returns the
+// number of flips made (k unless the triangulation has too few flippable edges).
+std::size_t random_flips(DTI& t, std::size_t k, Rng& rng)
+{
+  std::vector<DTI::Face_handle> faces;
+  faces.reserve(t.number_of_faces());
+  for(auto f = t.finite_faces_begin(); f != t.finite_faces_end(); ++f)
+    faces.push_back(f);
+  if(faces.empty())
+    return 0;
+  std::size_t done = 0, attempts = 0;
+  const std::size_t max_attempts = 100 * k + 1000;
+  auto orientation = t.geom_traits().orientation_2_object();
+  while(done < k && attempts++ < max_attempts) {
+    const DTI::Face_handle f = faces[rng.below(faces.size())];
+    const int i = int(rng.below(3));
+    const DTI::Face_handle g = f->neighbor(i);
+    if(t.is_infinite(g))
+      continue;
+    // f = (p, q, s) counterclockwise, edge q-s is shared with g = (s, q, r); the flip makes
+    // p-r. Strictly convex p, q, r, s <=> both new faces (p, q, r) and (p, r, s) turn left.
+    const Point& p = f->vertex(i)->point();
+    const Point& q = f->vertex(DTI::ccw(i))->point();
+    const Point& s = f->vertex(DTI::cw(i))->point();
+    const Point& r = t.mirror_vertex(f, i)->point();
+    if(orientation(p, q, r) == CGAL::LEFT_TURN && orientation(p, r, s) == CGAL::LEFT_TURN) {
+      t.tds().flip(f, i);
+      ++done;
+    }
+  }
+  return done;
+}
+
+std::vector<Face> random_triples(std::size_t n, std::size_t count, Rng& rng)
+{
+  std::vector<Face> faces(count);
+  for(Face& f : faces) {
+    f[0] = std::uint32_t(rng.below(n));
+    do f[1] = std::uint32_t(rng.below(n)); while(f[1] == f[0]);
+    do f[2] = std::uint32_t(rng.below(n)); while(f[2] == f[0] || f[2] == f[1]);
+  }
+  return faces;
+}
+
+// Mean nearest-neighbour distance: the nearest neighbour of a point is a Delaunay neighbour, so
+// it is the mean over vertices of their shortest incident edge.
+double mean_nearest_neighbour_distance(const DTI& t)
+{
+  std::vector<double> shortest(t.number_of_vertices(), std::numeric_limits<double>::infinity());
+  for(auto e = t.finite_edges_begin(); e != t.finite_edges_end(); ++e) {
+    const auto a = e->first->vertex(DTI::ccw(e->second));
+    const auto b = e->first->vertex(DTI::cw(e->second));
+    const double d = std::sqrt(CGAL::to_double(CGAL::squared_distance(a->point(), b->point())));
+    shortest[a->info()] = std::min(shortest[a->info()], d);
+    shortest[b->info()] = std::min(shortest[b->info()], d);
+  }
+  double sum = 0;
+  std::size_t count = 0;
+  for(double d : shortest)
+    if(std::isfinite(d)) {
+      sum += d;
+      ++count;
+    }
+  return count == 0 ? 0. : sum / double(count);
+}
+
+// The move of a point: distance `step`, direction drawn from a hash of its coordinates, so that
+// the moved set does not depend on the order in which the vertices are visited.
+Point moved(const Point& p, double step, std::uint64_t salt)
+{
+  const std::uint64_t h = mix(mix(bits(p.x()) ^ salt) ^ bits(p.y()));
+  const double angle = 2. * M_PI * (double(h >> 11) * 0x1.0p-53);
+  return Point(p.x() + step * std::cos(angle), p.y() + step * std::sin(angle));
+}
+
+// ---------------------------------------------------------------------------------------------
+// Checks: counts and an order-independent hash of the set of finite faces, each face the
+// lexicographically sorted triple of its point coordinates.
+struct Signature
+{
+  int dimension = -2;
+  std::size_t vertices = 0, faces = 0;
+  std::uint64_t sum = 0, xor_ = 0;
+  bool operator==(const Signature& o) const
+  {
+    return dimension == o.dimension && vertices == o.vertices && faces == o.faces && sum == o.sum &&
+           xor_ == o.xor_;
+  }
+  bool operator!=(const Signature& o) const { return !(*this == o); }
+  std::string str() const
+  {
+    std::ostringstream s;
+    s << "dim " << dimension << ", " << vertices << " vertices, " << faces << " faces, hash "
+      << std::hex << sum << "/" << xor_;
+    return s.str();
+  }
+};
+
+template <class Tr>
+Signature signature(const Tr& t)
+{
+  Signature sig;
+  sig.dimension = t.dimension();
+  sig.vertices = t.number_of_vertices();
+  if(t.dimension() < 2)
+    return sig;
+  auto less = [](const Point* a, const Point* b) {
+    return a->x() < b->x() || (a->x() == b->x() && a->y() < b->y());
+  };
+  for(auto f = t.finite_faces_begin(); f != t.finite_faces_end(); ++f) {
+    const Point* p[3] = {&f->vertex(0)->point(), &f->vertex(1)->point(), &f->vertex(2)->point()};
+    std::sort(p, p + 3, less);
+    std::uint64_t h = 0x243f6a8885a308d3ull;
+    for(int j = 0; j < 3; ++j)
+      h = mix(mix(h ^ bits(p[j]->x())) ^ bits(p[j]->y()));
+    sig.sum += h;
+    sig.xor_ ^= mix(h + 0x9e3779b97f4a7c15ull);
+    ++sig.faces;
+  }
+  return sig;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Options and output.
+struct Options
+{
+  std::vector<std::size_t> sizes{100000, 1000000};
+  int reps = 3;
+  std::vector<std::string> cases{"shuffled", "hilbert", "flips", "move", "random", "memory"};
+  std::vector<std::string> dists{"uniform", "clustered"};
+  std::string csv;
+  std::string malloc_policy = "keep";
+  std::uint64_t seed = 20260101;
+  bool wants(const std::string& c) const { return std::find(cases.begin(), cases.end(), c) != cases.end(); }
+};
+
+std::vector<std::string> split(const std::string& s)
+{
+  std::vector<std::string> out;
+  std::string item;
+  std::istringstream in(s);
+  while(std::getline(in, item, ','))
+    if(!item.empty())
+      out.push_back(item);
+  return out;
+}
+
+void usage(const char* program)
+{
+  std::printf(
+      "usage: %s [options]\n"
+      "  --n LIST        numbers of points, comma separated, 1e6 notation allowed (default 100000,1000000)\n"
+      "  --reps R        repetitions per measurement, the median is reported (default 3)\n"
+      "  --cases LIST    subset of shuffled,hilbert,flips,move,random,memory (default all)\n"
+      "  --dist LIST     subset of uniform,clustered (default both)\n"
+      "  --csv FILE      also write one CSV row per measurement to FILE\n"
+      "  --malloc P      keep (default): mallopt(M_MMAP_MAX=0, M_TRIM_THRESHOLD=-1), freed memory is\n"
+      "                  kept by the process and reused; default: glibc's own policy\n"
+      "  --seed S        base seed of every input (default 20260101)\n",
+      program);
+}
+
+Options parse(int argc, char** argv)
+{
+  Options o;
+  auto value = [&](int& i) -> std::string {
+    if(i + 1 >= argc) {
+      std::fprintf(stderr, "missing value after %s\n", argv[i]);
+      std::exit(2);
+    }
+    return argv[++i];
+  };
+  for(int i = 1; i < argc; ++i) {
+    const std::string a = argv[i];
+    if(a == "--n") {
+      o.sizes.clear();
+      for(const std::string& s : split(value(i))) {
+        const double d = std::stod(s);
+        if(!(d >= 3) || d > 4e9) {
+          std::fprintf(stderr, "bad --n value %s\n", s.c_str());
+          std::exit(2);
+        }
+        o.sizes.push_back(std::size_t(std::llround(d)));
+      }
+    } else if(a == "--reps") {
+      o.reps = std::max(1, std::atoi(value(i).c_str()));
+    } else if(a == "--cases") {
+      o.cases = split(value(i));
+      for(const std::string& c : o.cases)
+        if(c != "shuffled" && c != "hilbert" && c != "flips" && c != "move" && c != "random" &&
+           c != "memory") {
+          std::fprintf(stderr, "unknown case %s\n", c.c_str());
+          std::exit(2);
+        }
+    } else if(a == "--dist") {
+      o.dists = split(value(i));
+      for(const std::string& d : o.dists)
+        if(d != "uniform" && d != "clustered") {
+          std::fprintf(stderr, "unknown distribution %s\n", d.c_str());
+          std::exit(2);
+        }
+    } else if(a == "--csv") {
+      o.csv = value(i);
+    } else if(a == "--malloc") {
+      o.malloc_policy = value(i);
+      if(o.malloc_policy != "keep" && o.malloc_policy != "default") {
+        std::fprintf(stderr, "--malloc takes keep or default\n");
+        std::exit(2);
+      }
+    } else if(a == "--seed") {
+      o.seed = std::strtoull(value(i).c_str(), nullptr, 10);
+    } else if(a == "--help" || a == "-h") {
+      usage(argv[0]);
+      std::exit(0);
+    } else {
+      std::fprintf(stderr, "unknown option %s\n", a.c_str());
+      usage(argv[0]);
+      std::exit(2);
+    }
+  }
+  return o;
+}
+
+std::string read_first(const char* file, const char* key)
+{
+  std::ifstream in(file);
+  std::string line;
+  while(std::getline(in, line))
+    if(line.compare(0, std::strlen(key), key) == 0) {
+      const auto colon = line.find(':');
+      std::string v = colon == std::string::npos ? line : line.substr(colon + 1);
+      v.erase(0, v.find_first_not_of(" \t"));
+      return v;
+    }
+  return "unknown";
+}
+
+std::string read_line(const char* file)
+{
+  std::ifstream in(file);
+  std::string line;
+  std::getline(in, line);
+  return line;
+}
+
+double median(std::vector<double> v)
+{
+  if(v.empty())
+    return std::numeric_limits<double>::quiet_NaN();
+  std::sort(v.begin(), v.end());
+  const std::size_t m = v.size() / 2;
+  return v.size() % 2 ? v[m] : 0.5 * (v[m - 1] + v[m]);
+}
+
+std::string join(const std::vector<double>& v)
+{
+  std::ostringstream s;
+  s.precision(6);
+  for(std::size_t i = 0; i < v.size(); ++i)
+    s << (i ? ";" : "") << v[i];
+  return s.str();
+}
+
+struct Row
+{
+  std::string dist, kase, param;
+  std::size_t n = 0;
+  std::vector<double> cgal_times, our_times;
+  DFP::Statistics stats;
+  bool has_stats = false;
+  bool memory = false;
+  std::size_t cgal_bytes = 0, our_bytes = 0;
+  bool ok = true;
+  std::string failure;
+};
+
+class Report
+{
+public:
+  explicit Report(const std::string& csv_file)
+  {
+    if(!csv_file.empty()) {
+      csv_.open(csv_file);
+      if(!csv_) {
+        std::fprintf(stderr, "cannot write %s\n", csv_file.c_str());
+        std::exit(2);
+      }
+    }
+  }
+  std::ofstream& csv() { return csv_; }
+
+  void table_header() const
+  {
+    std::printf("%-9s %8s %-8s %-24s %9s %9s %7s  %-8s %8s %8s  %s\n", "dist", "n", "case",
+                "param", "CGAL[s]", "ours[s]", "ratio", "path", "flips", "D_local", "check");
+    std::printf("%s\n", std::string(118, '-').c_str());
+    std::fflush(stdout);
+  }
+
+  void add(const Row& r)
+  {
+    if(!r.ok) {
+      ++failures_;
+      const std::string msg = "!!!!!!!! CHECK FAILED: " + r.dist + " n=" + std::to_string(r.n) +
+                              " " + r.kase + " " + r.param + ": " + r.failure + " !!!!!!!!";
+      std::printf("%s\n", msg.c_str());
+      std::fprintf(stderr, "%s\n", msg.c_str());
+    }
+    const double tc = median(r.cgal_times), to = median(r.our_times);
+    if(r.memory) {
+      const double mc = double(r.cgal_bytes) / 1048576., mo = double(r.our_bytes) / 1048576.;
+      std::printf("%-9s %8zu %-8s %-24s CGAL %8.1f MiB (%5.1f B/pt)  ours %8.1f MiB (%5.1f B/pt)  ours/CGAL %5.2f  %s\n",
+                  r.dist.c_str(), r.n, r.kase.c_str(), r.param.c_str(), mc,
+                  double(r.cgal_bytes) / double(r.n), mo, double(r.our_bytes) / double(r.n),
+                  r.cgal_bytes ? double(r.our_bytes) / double(r.cgal_bytes) : 0., r.ok ? "ok" : "FAILED");
+    } else {
+      std::string path = "-";
+      if(r.has_stats)
+        path = r.stats.fell_back ? "FALLBACK" : "predict";
+      std::string check = r.ok ? "ok" : "FAILED";
+      if(r.has_stats && r.stats.fell_back && r.stats.fallback_reason && *r.stats.fallback_reason)
+        check += std::string(" (") + r.stats.fallback_reason + ")";
+      std::printf("%-9s %8zu %-8s %-24s %9.4f %9.4f %7.2f  %-8s %8zu %8zu  %s\n", r.dist.c_str(),
+                  r.n, r.kase.c_str(), r.param.c_str(), tc, to, tc / to, path.c_str(),
+                  r.has_stats ? r.stats.flips : 0, r.has_stats ? r.stats.edges_not_locally_delaunay : 0,
+                  check.c_str());
+    }
+    std::fflush(stdout);
+    if(csv_) {
+      auto q = [](const std::string& s) {
+        std::string out = "\"";
+        for(char c : s)
+          out += c == '"' ? std::string("\"\"") : std::string(1, c);
+        return out + "\"";
+      };
+      csv_ << r.dist << ',' << r.n << ',' << r.kase << ',' << q(r.param) << ','
+           << (r.memory ? std::size_t(1) : std::max(r.cgal_times.size(), r.our_times.size())) << ',';
+      if(r.memory)
+        csv_ << ",,,,,";
+      else
+        csv_ << tc << ',' << to << ',' << tc / to << ',' << join(r.cgal_times) << ','
+             << join(r.our_times) << ',';
+      if(r.has_stats)
+        csv_ << int(r.stats.fell_back) << ',' << q(r.stats.fallback_reason ? r.stats.fallback_reason : "")
+             << ',' << r.stats.flips << ',' << r.stats.faces_in << ',' << r.stats.faces_certified << ','
+             << r.stats.points_reinserted << ',' << r.stats.edges_tested << ','
+             << r.stats.edges_not_locally_delaunay << ',' << r.stats.points_unused << ',';
+      else
+        csv_ << ",,,,,,,,,";
+      if(r.memory)
+        csv_ << r.cgal_bytes << ',' << r.our_bytes << ','
+             << (r.cgal_bytes ? double(r.our_bytes) / double(r.cgal_bytes) : 0.) << ',';
+      else
+        csv_ << ",,,";
+      csv_ << (r.ok ? "ok" : "FAILED") << '\n';
+      csv_.flush();
+    }
+  }
+  int failures() const { return failures_; }
+
+private:
+  std::ofstream csv_;
+  int failures_ = 0;
+};
+
+// ---------------------------------------------------------------------------------------------
+// Timed calls. Each constructs its triangulation before its timer starts and destroys it after
+// the timer stops; set-up (copies, moves) and the checks run outside the timers.
+
+// CGAL's from-scratch build: range insert into an empty Delaunay_triangulation_2.
+double time_cgal(const std::vector<Point>& points, Signature& sig)
+{
+  DT dt;
+  CGAL::Real_timer timer;
+  timer.start();
+  dt.insert(points.begin(), points.end());
+  timer.stop();
+  sig = signature(dt);
+  return timer.time();
+}
+
+// Our delaunay_from_prediction().
+double time_prediction(const std::vector<Point>& points, const std::vector<Face>& faces,
+                       DFP::Statistics& stats, Signature& sig)
+{
+  DT dt;
+  CGAL::Real_timer timer;
+  timer.start();
+  stats = DFP::delaunay_from_prediction(points, faces, dt);
+  timer.stop();
+  sig = signature(dt);
+  return timer.time();
+}
+
+// Runs `reps` repetitions of CGAL's build (`cgal`) and of ours (`ours`), interleaved (CGAL
+// first in even repetitions, ours first in odd ones) so that both see the same machine load,
+// and checks every result of ours against CGAL's.
+template <class Cgal, class Ours>
+void measure(int reps, Row& row, Cgal cgal, Ours ours)
+{
+  Signature reference;
+  std::vector<Signature> results;
+  for(int r = 0; r < reps; ++r) {
+    for(int turn = 0; turn < 2; ++turn) {
+      if((turn == 0) == (r % 2 == 0)) {
+        Signature s;
+        row.cgal_times.push_back(cgal(s));
+        if(row.cgal_times.size() == 1)
+          reference = s;
+        else if(s != reference && row.ok) {
+          row.ok = false;
+          row.failure = "CGAL's own repetitions disagree";
+        }
+      } else {
+        Signature s;
+        try {
+          row.our_times.push_back(ours(row.stats, s));
+        } catch(const std::exception& e) {
+          row.ok = false;
+          row.failure = std::string("exception: ") + e.what();
+          return;
+        }
+        row.has_stats = true;
+        results.push_back(s);
+      }
+    }
+  }
+  for(const Signature& s : results)
+    if(s != reference && row.ok) {
+      row.ok = false;
+      row.failure = "ours: " + s.str() + "; CGAL: " + reference.str();
+    }
+}
+
+// A delaunay_from_prediction() case: CGAL builds `points` from scratch, we build them from
+// `faces`.
+void measure_prediction(int reps, Row& row, const std::vector<Point>& points,
+                        const std::vector<Face>& faces)
+{
+  measure(reps, row, [&](Signature& s) { return time_cgal(points, s); },
+          [&](DFP::Statistics& st, Signature& s) { return time_prediction(points, faces, st, s); });
+}
+
+std::string percent(double f)
+{
+  std::ostringstream s;
+  s << f * 100 << "%";
+  return s.str();
+}
+
+// ---------------------------------------------------------------------------------------------
+// One (distribution, n): all requested cases.
+void run(const Options& o, const std::string& dist, std::size_t n, Report& report)
+{
+  const int reps = o.reps;
+  const std::vector<Point> points = make_points(dist, n, o.seed);
+  if(const std::size_t d = count_duplicates(points))
+    std::printf("# note: %s n=%zu has %zu duplicate points\n", dist.c_str(), n, d);
+
+  // The Delaunay triangulation of `points`, with point indices (set-up, untimed).
+  DTI indexed;
+  if(o.wants("shuffled") || o.wants("flips") || o.wants("move") || o.wants("memory"))
+    indexed = build_indexed(points);
+
+  auto new_row = [&](const std::string& kase, const std::string& param) {
+    Row row;
+    row.dist = dist;
+    row.n = n;
+    row.kase = kase;
+    row.param = param;
+    return row;
+  };
+
+  // 1. D = 0, shuffled faces, points in random order.
+  std::vector<Face> shuffled_faces;
+  if(o.wants("shuffled") || o.wants("memory")) {
+    Rng rng(seed_for(o.seed, "shuffled/" + dist, n));
+    shuffled_faces = export_faces(indexed);
+    shuffle_faces(shuffled_faces, rng);
+  }
+  if(o.wants("shuffled")) {
+    Row row = new_row("shuffled", "D=0, random order");
+    measure_prediction(reps, row, points, shuffled_faces);
+    report.add(row);
+  }
+
+  // 2. D = 0, coherent: Hilbert-sorted points, faces in the order CGAL's DT of the sorted points
+  //    iterates them (indices into the sorted points). CGAL builds from the sorted points.
+  if(o.wants("hilbert")) {
+    std::vector<Point> sorted = points;
+    CGAL::hilbert_sort(sorted.begin(), sorted.end());
+    std::vector<Face> mesh_faces;
+    {
+      const DTI t = build_indexed(sorted);
+      mesh_faces = export_faces(t);
+    }
+    Row row = new_row("hilbert", "D=0, Hilbert + mesh order");
+    measure_prediction(reps, row, sorted, mesh_faces);
+    report.add(row);
+  }
+
+  // 3. k random flips of the DT, faces in random order.
+  if(o.wants("flips")) {
+    for(double fraction : {0.001, 0.01, 0.1}) {
+      const std::size_t k = std::max<std::size_t>(1, std::size_t(std::llround(fraction * double(n))));
+      Rng rng(seed_for(o.seed, "flips/" + dist + "/" + std::to_string(k), n));
+      std::vector<Face> faces;
+      std::size_t made = 0;
+      {
+        DTI flipped = indexed;
+        made = random_flips(flipped, k, rng);
+        faces = export_faces(flipped);
+      }
+      shuffle_faces(faces, rng);
+      Row row = new_row("flips", "k=" + percent(fraction) + " n (" + std::to_string(made) + ")");
+      measure_prediction(reps, row, points, faces);
+      report.add(row);
+    }
+  }
+
+  // 4. make_delaunay() after moving every point by sigma x mean nearest-neighbour distance, in
+  //    a direction drawn from the point's coordinates. Every repetition copies CGAL's DT of the
+  //    points and moves its vertices (untimed), then times make_delaunay() alone. CGAL builds
+  //    the moved points from scratch.
+  if(o.wants("move")) {
+    const double nn = mean_nearest_neighbour_distance(indexed);
+    const DT base(points.begin(), points.end());
+    const std::uint64_t salt = seed_for(o.seed, "move/" + dist, n);
+    for(double sigma : {0.001, 0.01, 0.1, 0.5}) {
+      const double step = sigma * nn;
+      std::vector<Point> moved_points(points.size());
+      for(std::size_t i = 0; i < points.size(); ++i)
+        moved_points[i] = moved(points[i], step, salt);
+      std::ostringstream param;
+      param << "sigma=" << sigma << " (" << std::setprecision(2) << step << ")";
+      Row row = new_row("move", param.str());
+      measure(reps, row, [&](Signature& s) { return time_cgal(moved_points, s); },
+              [&](DFP::Statistics& st, Signature& s) {
+                DT tr = base;
+                for(auto v = tr.finite_vertices_begin(); v != tr.finite_vertices_end(); ++v)
+                  v->set_point(moved(v->point(), step, salt));
+                CGAL::Real_timer timer;
+                timer.start();
+                st = DFP::make_delaunay(tr);
+                timer.stop();
+                s = signature(tr);
+                return timer.time();
+              });
+      report.add(row);
+    }
+  }
+
+  // 5. Random triples.
+  if(o.wants("random")) {
+    Rng rng(seed_for(o.seed, "random/" + dist, n));
+    const std::vector<Face> faces = random_triples(n, 2 * n - 5, rng);
+    Row row = new_row("random", "2n-5 random triples");
+    measure_prediction(reps, row, points, faces);
+    report.add(row);
+  }
+
+  // 6. Peak heap of case 1 (see namespace counting): ours vs CGAL's from-scratch build, each
+  //    measured once (the counts are deterministic), triangulation construction included.
+  if(o.wants("memory")) {
+    Row row = new_row("memory", "peak heap, shuffled");
+    row.memory = true;
+    Signature reference, s;
+    {
+      counting::Peak_scope scope;
+      DT dt;
+      dt.insert(points.begin(), points.end());
+      row.cgal_bytes = scope.bytes();
+      reference = signature(dt);
+    }
+    {
+      counting::Peak_scope scope;
+      DT dt;
+      try {
+        row.stats = DFP::delaunay_from_prediction(points, shuffled_faces, dt);
+        row.has_stats = true;
+      } catch(const std::exception& e) {
+        row.ok = false;
+        row.failure = std::string("exception: ") + e.what();
+      }
+      row.our_bytes = scope.bytes();
+      s = signature(dt);
+    }
+    if(row.ok && s != reference) {
+      row.ok = false;
+      row.failure = "ours: " + s.str() + "; CGAL: " + reference.str();
+    }
+    report.add(row);
+  }
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+  const Options o = parse(argc, argv);
+
+  // Allocator policy, fixed before the first allocation of any input. glibc trimming the heap
+  // top and mmap/munmap of large blocks made timings erratic (the same call 2x slower in one
+  // phase than in another, depending on what the previous phase had freed): "keep" serves every
+  // block from the heap and never gives memory back, so after the first repetition neither CGAL
+  // nor we pay page faults for memory an earlier step already touched.
+  std::string policy = "glibc default (mmap threshold and trimming as glibc decides)";
+  if(o.malloc_policy == "keep") {
+    const bool ok = mallopt(M_MMAP_MAX, 0) == 1 && mallopt(M_TRIM_THRESHOLD, -1) == 1;
+    policy = ok ? "keep: mallopt(M_MMAP_MAX, 0) + mallopt(M_TRIM_THRESHOLD, -1): no mmap'd blocks, "
+                  "freed memory is never returned to the OS and is reused"
+                : "keep requested but mallopt FAILED: glibc default in effect";
+  }
+
+  std::string command;
+  for(int i = 0; i < argc; ++i) {
+    const std::string a = argv[i];
+    const bool quote = a.empty() || a.find_first_of(" \t'\"$\\") != std::string::npos;
+    command += (i ? " " : "") + (quote ? "'" + a + "'" : a);
+  }
+  cpu_set_t set;
+  int cpus_allowed = 0;
+  if(sched_getaffinity(0, sizeof set, &set) == 0)
+    cpus_allowed = CPU_COUNT(&set);
+  char date[64];
+  const std::time_t now = std::time(nullptr);
+  std::strftime(date, sizeof date, "%Y-%m-%d %H:%M:%S %Z", std::localtime(&now));
+  std::string sizes, dists, cases;
+  for(std::size_t n : o.sizes)
+    sizes += (sizes.empty() ? "" : ",") + std::to_string(n);
+  for(const auto& d : o.dists)
+    dists += (dists.empty() ? "" : ",") + d;
+  for(const auto& c : o.cases)
+    cases += (cases.empty() ? "" : ",") + c;
+
+  std::ostringstream header;
+  header << "Delaunay_from_prediction benchmark, " << date << "\n"
+         << "command:  " << command << "\n"
+         << "machine:  nproc " << cpus_allowed << " (online " << sysconf(_SC_NPROCESSORS_ONLN)
+         << "), CPU " << read_first("/proc/cpuinfo", "model name") << ", RAM "
+         << read_first("/proc/meminfo", "MemTotal") << ", loadavg " << read_line("/proc/loadavg") << "\n"
+         << "build:    g++ " << __VERSION__ << ", CGAL " << CGAL_VERSION_STR
+#ifdef NDEBUG
+         << ", NDEBUG (Release)"
+#else
+         << ", NOT A RELEASE BUILD (assertions on): timings are meaningless"
+#endif
+         << "\n"
+         << "setup:    Epick, CGAL::Delaunay_triangulation_2<Epick> for CGAL and for us, one thread,\n"
+         << "          CGAL::Real_timer (wall clock), median of " << o.reps << " repetition(s), seed "
+         << o.seed << "\n"
+         << "n:        " << sizes << "    dist: " << dists << "    cases: " << cases << "\n"
+         << "malloc:   " << policy << "\n"
+         << "memory:   peak bytes held through a counting global operator new/delete (malloc_usable_size)\n"
+         << "          during the call, minus those held when it started: result included, inputs excluded\n"
+         << "ratio:    median CGAL from-scratch time / median ours (> 1: we are faster). CGAL: range\n"
+         << "          insert of the same points (hilbert: the sorted points; move: the moved points),\n"
+         << "          its repetitions interleaved with ours. path: predict = prediction used, FALLBACK =\n"
+         << "          built from scratch. D_local: predicted edges not locally Delaunay. flips: flips made.\n"
+         << "check:    every result of ours vs CGAL's: counts + hash of the face set (untimed)\n";
+  std::printf("%s\n", header.str().c_str());
+  Report report(o.csv);
+  if(report.csv()) {
+    std::istringstream lines(header.str());
+    std::string line;
+    while(std::getline(lines, line))
+      report.csv() << "# " << line << '\n';
+    report.csv() << "dist,n,case,param,reps,cgal_s,ours_s,ratio,cgal_all_s,ours_all_s,fell_back,"
+                    "fallback_reason,flips,faces_in,faces_certified,points_reinserted,edges_tested,"
+                    "edges_not_locally_delaunay,points_unused,cgal_peak_bytes,ours_peak_bytes,"
+                    "mem_ratio_ours_over_cgal,check\n";
+  }
+  report.table_header();
+
+  CGAL::Real_timer total;
+  total.start();
+  for(std::size_t n : o.sizes)
+    for(const std::string& dist : o.dists)
+      run(o, dist, n, report);
+  total.stop();
+
+  std::printf("\ntotal %.1f s. ", total.time());
+  if(report.failures() == 0) {
+    std::printf("All checks passed (every result equal to CGAL's).\n");
+    return 0;
+  }
+  std::printf("!!!!!!!! %d CHECK(S) FAILED !!!!!!!!\n", report.failures());
+  std::fprintf(stderr, "!!!!!!!! %d CHECK(S) FAILED !!!!!!!!\n", report.failures());
+  return 1;
+}

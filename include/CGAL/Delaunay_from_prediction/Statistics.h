@@ -1,0 +1,66 @@
+// Copyright (c) 2026 Delaunay_from_prediction contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Author(s): Delaunay_from_prediction founding team
+
+#ifndef CGAL_DELAUNAY_FROM_PREDICTION_STATISTICS_H
+#define CGAL_DELAUNAY_FROM_PREDICTION_STATISTICS_H
+
+#include <cstddef>
+#include <stdexcept>
+#include <string>
+
+namespace CGAL {
+namespace Delaunay_from_prediction {
+
+/*!
+\ingroup PkgDelaunayFromPredictionRef
+Exception thrown for structurally malformed input: an index out of range (a negative signed
+index included), a face repeating an index, a non-finite point coordinate, or, for
+`make_delaunay()`, two vertices at the same point. `what()` names the offending face, index,
+point or vertices. When it is thrown, the caller's containers and triangulation are unchanged.
+*/
+class Invalid_prediction : public std::invalid_argument
+{
+public:
+  /// constructs the exception with the message `what`.
+  /// \param what the message, returned by `what()`.
+  explicit Invalid_prediction(const std::string& what) : std::invalid_argument(what) {}
+};
+
+/*!
+\ingroup PkgDelaunayFromPredictionRef
+Reports what a call of `delaunay_from_prediction()` or `make_delaunay()` did. Every member is
+filled at negligible cost.
+*/
+struct Statistics
+{
+  /// number of predicted faces read (`make_delaunay()`: finite faces before the call).
+  std::size_t faces_in = 0;
+  /// number of predicted faces that are faces of the result and were never modified.
+  std::size_t faces_certified = 0;
+  /// number of edge flips performed.
+  std::size_t flips = 0;
+  /// number of points (re)inserted by CGAL's incremental insertion: points used by no face,
+  /// or every point when the call built from scratch.
+  std::size_t points_reinserted = 0;
+  /// `true` if the call gave up on the prediction and built the triangulation from scratch.
+  bool fell_back = false;
+
+  /// number of interior edges of the prediction checked by the in-circle test.
+  std::size_t edges_tested = 0;
+  /// number of those edges found not locally Delaunay (the measure \f$D_{local}\f$ of the
+  /// paper when the prediction is a triangulation).
+  std::size_t edges_not_locally_delaunay = 0;
+  /// number of points used by no predicted face (inserted afterwards, or merged as duplicates).
+  std::size_t points_unused = 0;
+  /// number of points equal to a point of smaller index (they share its vertex).
+  std::size_t duplicate_points = 0;
+  /// why the prediction was not used as it is: empty when it was a triangulation of the
+  /// points; otherwise a static string such as `"a face is degenerate"`.
+  const char* fallback_reason = "";
+};
+
+} // namespace Delaunay_from_prediction
+} // namespace CGAL
+
+#endif // CGAL_DELAUNAY_FROM_PREDICTION_STATISTICS_H

@@ -1,0 +1,550 @@
+// Copyright (c) 2026 Delaunay_from_prediction contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Author(s): Delaunay_from_prediction founding team
+//
+// Stages 2, 3 and 5 of the pipeline for a prediction given as index triples: import,
+// certify and export to CGAL's triangulation data structure, fused into one streaming pass.
+//
+// At 1e6 points the cost is memory traffic, not arithmetic (see PERFORMANCE_NOTES), so:
+//  - the faces are read and validated once into 32-bit triples;
+//  - if the points or the faces come in no spatial order (sampled), the points are renumbered
+//    along a serpentine grid and the faces counting-sorted by their smallest new index, so
+//    that everything later touches a narrow band of memory (spatial_order.h);
+//  - one pass over the faces then orients each face, creates its CGAL vertices and face, and
+//    pairs its half-edges with their twins through a small hash table holding the open
+//    "frontier" edges; when a twin is found the two faces are linked and the edge gets its
+//    in-circle test while both faces are in cache.
+// Linear expected time; the hash table stays as small as the frontier (about sqrt(n) edges
+// for spatially ordered faces).
+
+#ifndef CGAL_DELAUNAY_FROM_PREDICTION_INTERNAL_IMPORT_PREDICTION_H
+#define CGAL_DELAUNAY_FROM_PREDICTION_INTERNAL_IMPORT_PREDICTION_H
+
+#include <CGAL/Delaunay_from_prediction/internal/input_check.h>
+#include <CGAL/Delaunay_from_prediction/internal/predicates.h>
+#include <CGAL/Delaunay_from_prediction/internal/spatial_order.h>
+#include <CGAL/Delaunay_from_prediction/internal/vertex_info.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <iterator>
+#include <limits>
+#include <type_traits>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Delaunay_from_prediction {
+namespace internal {
+
+// Small deterministic generator (splitmix64) for the sampling screen.
+struct Splitmix64
+{
+  std::uint64_t state;
+  std::uint64_t operator()()
+  {
+    std::uint64_t z = (state += 0x9E3779B97F4A7C15ull);
+    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+    return z ^ (z >> 31);
+  }
+};
+
+template <class Range>
+constexpr bool has_random_access()
+{
+  using Iterator = decltype(std::begin(std::declval<const Range&>()));
+  return std::is_base_of<std::random_access_iterator_tag,
+                         typename std::iterator_traits<Iterator>::iterator_category>::value;
+}
+
+// Sampling screen: a cheap test that rejects a prediction far from Delaunay before any
+// linear pass. It draws 32 faces and 16 points at random (fixed seed) and counts the faces
+// whose circumcircle strictly contains a drawn point. A face of a prediction anywhere near
+// DT(P) has a nearly empty circumcircle, so a drawn point falls inside with probability about
+// (points inside)/n; a random triple's circle holds a constant fraction of P. The prediction
+// is rejected when more than half of the drawn faces are hit. Only speed depends on this
+// decision, never the result. Needs random access to the faces; returns false otherwise.
+template <class Gt, class PointIterator, class FaceRange>
+bool fails_sampling_screen(const Gt& gt, PointIterator points, std::size_t n, const FaceRange& faces,
+                           std::size_t number_of_faces)
+{
+  if constexpr(!has_random_access<FaceRange>()) {
+    return false;
+  } else {
+    constexpr int drawn_faces = 32, drawn_points = 16;
+    if(n < 4096 || number_of_faces < 4096)
+      return false;
+    Splitmix64 random{0x5eed5eedull};
+    auto orientation = gt.orientation_2_object();
+    auto in_circle = gt.side_of_oriented_circle_2_object();
+    int hit_faces = 0, drawn = 0;
+    for(int s = 0; s < drawn_faces; ++s) {
+      const auto& face = std::begin(faces)[std::ptrdiff_t(random() % number_of_faces)];
+      std::size_t idx[3];
+      bool in_range = true;
+      for(int j = 0; j < 3; ++j) {
+        const auto raw = face[j];
+        if constexpr(std::is_signed<std::decay_t<decltype(raw)>>::value)
+          in_range = in_range && raw >= 0;
+        idx[j] = static_cast<std::size_t>(raw);
+        in_range = in_range && idx[j] < n;
+      }
+      if(!in_range)
+        return false; // malformed: let the full check throw
+      const auto& p = points[idx[0]];
+      const auto& q = points[idx[1]];
+      const auto& r = points[idx[2]];
+      const Orientation o = orientation(p, q, r);
+      if(o == COLLINEAR)
+        continue;
+      ++drawn;
+      for(int t = 0; t < drawn_points; ++t) {
+        const std::size_t k = std::size_t(random() % n);
+        if(k == idx[0] || k == idx[1] || k == idx[2])
+          continue;
+        const Oriented_side side = in_circle(p, q, r, points[k]);
+        if(side != ON_ORIENTED_BOUNDARY && int(side) == int(o)) {
+          ++hit_faces;
+          break;
+        }
+      }
+    }
+    return drawn > 0 && 2 * hit_faces > drawn;
+  }
+}
+
+// What Prediction_importer leaves behind besides the triangulation itself.
+template <class Triangulation>
+struct Imported_prediction
+{
+  using Face_handle = typename Triangulation::Face_handle;
+
+  std::vector<std::size_t> unused_points;                         // used by no face
+  std::vector<std::pair<Face_handle, int>> not_locally_delaunay; // one side of each such edge
+  std::size_t vertices_used = 0;
+  std::size_t edges_tested = 0;
+  bool reordered = false;        // whether the spatial reordering ran
+  const char* failure = nullptr; // why the faces are not a triangulation; null if they are
+};
+
+// Overflow store of open half-edges: a linear-probing hash table keyed by the undirected
+// edge (smaller index, larger index), with backward-shift deletion so that it never fills
+// with tombstones. Grows by doubling.
+class Open_halfedge_table
+{
+public:
+  static constexpr std::uint64_t empty = (std::numeric_limits<std::uint64_t>::max)();
+
+  Open_halfedge_table() { resize(1u << 8); }
+
+  static std::uint64_t edge_key(std::uint32_t smaller, std::uint32_t larger)
+  {
+    return std::uint64_t(smaller) << 32 | larger;
+  }
+
+  void insert(std::uint64_t edge, std::uintptr_t code)
+  {
+    if(2 * (size_ + 1) > slots_.size())
+      resize(2 * slots_.size());
+    std::size_t i = home(edge);
+    while(slots_[i].edge != empty)
+      i = (i + 1) & mask_;
+    slots_[i] = Slot{edge, code};
+    ++size_;
+  }
+
+  // Removes `edge` if present and returns true with its code.
+  bool take(std::uint64_t edge, std::uintptr_t& code)
+  {
+    if(size_ == 0)
+      return false;
+    std::size_t i = home(edge);
+    for(; slots_[i].edge != edge; i = (i + 1) & mask_)
+      if(slots_[i].edge == empty)
+        return false;
+    code = slots_[i].code;
+    // Backward shift: move each following entry into the hole unless its home lies
+    // cyclically in (hole, entry].
+    for(std::size_t j = i;;) {
+      j = (j + 1) & mask_;
+      if(slots_[j].edge == empty)
+        break;
+      const std::size_t k = home(slots_[j].edge);
+      const bool stays = (i <= j) ? (i < k && k <= j) : (i < k || k <= j);
+      if(!stays) {
+        slots_[i] = slots_[j];
+        i = j;
+      }
+    }
+    slots_[i].edge = empty;
+    --size_;
+    return true;
+  }
+
+  std::size_t size() const { return size_; }
+
+  template <class Visit> // visit(smaller, larger, code)
+  void for_each(Visit visit) const
+  {
+    for(const Slot& s : slots_)
+      if(s.edge != empty)
+        visit(std::uint32_t(s.edge >> 32), std::uint32_t(s.edge), s.code);
+  }
+
+private:
+  struct Slot
+  {
+    std::uint64_t edge;
+    std::uintptr_t code;
+  };
+  std::size_t home(std::uint64_t edge) const
+  {
+    return std::size_t((edge * 0x9E3779B97F4A7C15ull) >> shift_);
+  }
+  void resize(std::size_t capacity)
+  {
+    std::vector<Slot> old(capacity, Slot{empty, 0});
+    old.swap(slots_);
+    mask_ = capacity - 1;
+    shift_ = 64;
+    for(std::size_t c = capacity; c > 1; c >>= 1)
+      --shift_;
+    size_ = 0;
+    for(const Slot& s : old)
+      if(s.edge != empty)
+        insert(s.edge, s.code);
+  }
+
+  std::vector<Slot> slots_;
+  std::size_t mask_ = 0, size_ = 0;
+  int shift_ = 64;
+};
+
+// Half-edges waiting for their twin, filed under the edge's smaller endpoint u in a ring of
+// per-vertex lists indexed by u modulo a power of two. Faces arrive in band order (sorted by
+// smallest index, spatial_order.h), so the endpoints with waiting half-edges lie in a window
+// narrower than the ring and a lookup is a scan of a few entries in cache. A list that is full,
+// or whose ring slot is claimed by a later vertex, spills into Open_halfedge_table.
+class Open_halfedges
+{
+public:
+  explicit Open_halfedges(std::size_t n)
+  {
+    // Small inputs: one list per vertex. Otherwise a window of 16 sqrt(n), about eight rows of
+    // the reordering grid.
+    const std::size_t wanted = n <= (std::size_t(1) << 16)
+                                   ? n
+                                   : (std::min)(n, std::size_t(16 * std::sqrt(double(n))) + 1024);
+    std::size_t size = 64;
+    while(size < wanted)
+      size <<= 1;
+    lists_.assign(size, List{none, 0, {}, {}});
+    mask_ = size - 1;
+  }
+
+  // If the twin of the half-edge with endpoints u < x is open, closes it and returns true with
+  // its code; otherwise opens this half-edge with `code` and returns false.
+  bool take_or_open(std::uint32_t u, std::uint32_t x, std::uintptr_t code, std::uintptr_t& twin)
+  {
+    List& list = lists_[u & mask_];
+    if(list.owner != u) {
+      for(std::uint32_t k = 0; k < list.count; ++k)
+        spill_.insert(Open_halfedge_table::edge_key(list.owner, list.other[k]), list.code[k]);
+      list.owner = u;
+      list.count = 0;
+    }
+    for(std::uint32_t k = 0; k < list.count; ++k)
+      if(list.other[k] == x) {
+        twin = list.code[k];
+        --list.count;
+        list.other[k] = list.other[list.count];
+        list.code[k] = list.code[list.count];
+        --open_;
+        return true;
+      }
+    if(spill_.take(Open_halfedge_table::edge_key(u, x), twin)) {
+      --open_;
+      return true;
+    }
+    ++open_;
+    if(list.count < capacity) {
+      list.other[list.count] = x;
+      list.code[list.count] = code;
+      ++list.count;
+    } else {
+      spill_.insert(Open_halfedge_table::edge_key(u, x), code);
+    }
+    return false;
+  }
+
+  std::size_t size() const { return open_; }
+
+  template <class Visit> // visit(smaller, larger, code)
+  void for_each(Visit visit) const
+  {
+    for(const List& list : lists_)
+      for(std::uint32_t k = 0; k < list.count; ++k)
+        visit(list.owner, list.other[k], list.code[k]);
+    spill_.for_each(visit);
+  }
+
+private:
+  static constexpr std::uint32_t none = (std::numeric_limits<std::uint32_t>::max)();
+  static constexpr std::uint32_t capacity = 6;
+  struct List
+  {
+    std::uint32_t owner, count;
+    std::uint32_t other[capacity];
+    std::uintptr_t code[capacity];
+  };
+  std::vector<List> lists_;
+  std::size_t mask_ = 0, open_ = 0;
+  Open_halfedge_table spill_;
+};
+
+template <class Triangulation>
+class Prediction_importer
+{
+  using Vertex_handle = typename Triangulation::Vertex_handle;
+  using Face_handle = typename Triangulation::Face_handle;
+  using Face = typename Triangulation::Face;
+  using Point = typename Triangulation::Point;
+  static constexpr std::uint32_t none = (std::numeric_limits<std::uint32_t>::max)();
+  // An open half-edge is stored as its face's address (faces hold pointers: 8-byte aligned)
+  // with the half-edge's index (the vertex it faces) in bits 0-1 and, in bit 2, whether its
+  // tail is the edge's smaller endpoint.
+  static constexpr std::uintptr_t tail_is_smaller_bit = 4, index_bits = 3, flag_bits = 7;
+
+public:
+  // Imports and certifies the prediction into `tr`, fresh from its constructor. All faces
+  // are validated first (Invalid_prediction is thrown before anything else happens).
+  //
+  // Why the checks certify a triangulation. Orient every face counterclockwise (a flat face
+  // fails). Pair each half-edge with one of opposite direction on the same edge if there is
+  // one (two faces on the same side of an edge fail). For a point x on no edge let deg(x) be
+  // the number of faces containing x. Summing the winding numbers of the face boundaries,
+  // paired half-edges cancel, so deg(x) is the winding number around x of the chain of
+  // unpaired half-edges. If that chain is a single convex polygon wound once counterclockwise,
+  // deg is 1 inside it and 0 outside: the faces tile the polygon with disjoint interiors. Then
+  // no edge has more than two faces, no vertex lies inside another face's edge and no two
+  // vertices coincide (the faces at such a place would cover part of the plane twice), and
+  // each vertex's link winds exactly once: the faces form a triangulation of their vertices
+  // whose domain is convex, hence their convex hull. If every point is a vertex or equal to
+  // one, it triangulates P; if moreover every interior edge is locally Delaunay under CGAL's
+  // perturbed in-circle test, it is CGAL's DT(P) (Delaunay's lemma, applied to the
+  // symbolically perturbed points, whose Delaunay triangulation is unique).
+  template <class PointIterator, class FaceRange>
+  static void run(Triangulation& tr, PointIterator points, std::size_t n, const FaceRange& faces,
+                  std::size_t number_of_faces, Imported_prediction<Triangulation>& out)
+  {
+    Prediction_importer importer(tr, n, number_of_faces, out);
+    std::vector<std::uint32_t> triples;
+    read_faces(faces, n, number_of_faces, triples, out.failure);
+    if(out.failure != nullptr)
+      return;
+    if(number_of_faces == 0) {
+      out.failure = "there are no faces";
+      return;
+    }
+    Spatial_order order;
+    order.compute(tr.geom_traits(), points, n, triples);
+    out.reordered = order.renumbered() || order.faces_sorted();
+    if(order.renumbered()) {
+      std::vector<Point> sorted_points;
+      sorted_points.reserve(n);
+      for(std::uint32_t v = 0; v < n; ++v)
+        sorted_points.push_back(points[order.old_index(v)]);
+      importer.build(sorted_points.begin(), triples, order);
+    } else {
+      importer.build(points, triples, order);
+    }
+  }
+
+private:
+  Prediction_importer(Triangulation& tr, std::size_t n, std::size_t number_of_faces,
+                      Imported_prediction<Triangulation>& out)
+      : tr_(tr), n_(n), number_of_faces_(number_of_faces), out_(out)
+  {}
+
+  // Validates every face (throws Invalid_prediction) into 32-bit triples.
+  template <class FaceRange>
+  static void read_faces(const FaceRange& faces, std::size_t n, std::size_t number_of_faces,
+                         std::vector<std::uint32_t>& triples, const char*& failure)
+  {
+    // 32-bit indices: at that size a CGAL triangulation needs hundreds of GB anyway.
+    const bool fits = n < none && number_of_faces < (std::size_t(1) << 31);
+    if(fits)
+      triples.resize(3 * number_of_faces);
+    else
+      failure = "too many points or faces for 32-bit indices";
+    std::uint32_t* out = triples.data();
+    std::size_t k = 0;
+    for(const auto& face : faces) {
+      std::size_t idx[3];
+      read_face(face, k++, n, idx);
+      if(fits) {
+        out[0] = std::uint32_t(idx[0]);
+        out[1] = std::uint32_t(idx[1]);
+        out[2] = std::uint32_t(idx[2]);
+        out += 3;
+      }
+    }
+  }
+
+  // The streaming pass, then the hull.
+  template <class PointIterator>
+  void build(PointIterator points, const std::vector<std::uint32_t>& triples,
+             const Spatial_order& order)
+  {
+    auto& tds = tr_.tds();
+    const auto& gt = tr_.geom_traits();
+    auto orientation = gt.orientation_2_object();
+    tds.faces().clear(); // the constructor's face of dimension -1
+    tds.set_dimension(2);
+    tds.vertices().reserve(n_ + 1);
+    tds.faces().reserve(number_of_faces_ + 64);
+    std::vector<Vertex_handle> vertex_of(n_);
+    Open_halfedges open(n_);
+
+    const std::uint32_t* t = triples.data();
+    for(std::size_t k = 0; k < number_of_faces_; ++k, t += 3) {
+      std::uint32_t v[3] = {t[0], t[1], t[2]};
+      const Point& p0 = points[v[0]];
+      Orientation o = orientation(p0, points[v[1]], points[v[2]]);
+      if(o == COLLINEAR) {
+        out_.failure = "a face is degenerate (its points are collinear or equal)";
+        return;
+      }
+      if(o == NEGATIVE)
+        std::swap(v[1], v[2]);
+      Vertex_handle w[3];
+      bool created[3];
+      for(int i = 0; i < 3; ++i) {
+        Vertex_handle& slot = vertex_of[v[i]];
+        created[i] = (slot == Vertex_handle());
+        if(created[i]) {
+          slot = tds.create_vertex();
+          slot->set_point(points[v[i]]);
+          set_index_info(slot, order.old_index(v[i]));
+          ++out_.vertices_used;
+        }
+        w[i] = slot;
+      }
+      const Face_handle f = tds.create_face(w[0], w[1], w[2]);
+      for(int i = 0; i < 3; ++i)
+        if(created[i])
+          w[i]->set_face(f);
+
+      // Half-edge i runs from v[ccw(i)] to v[cw(i)]; the face is on its left.
+      for(int i = 0; i < 3; ++i) {
+        const std::uint32_t tail = v[ccw(i)], head = v[cw(i)];
+        const bool tail_is_smaller = tail < head;
+        const std::uintptr_t code = reinterpret_cast<std::uintptr_t>(&*f) | std::uintptr_t(i) |
+                                    (tail_is_smaller ? tail_is_smaller_bit : 0);
+        std::uintptr_t twin = 0;
+        if(!open.take_or_open(tail_is_smaller ? tail : head, tail_is_smaller ? head : tail, code, twin))
+          continue;
+        if(((twin ^ code) & tail_is_smaller_bit) == 0) {
+          out_.failure = "two faces lie on the same side of an edge (overlapping or repeated faces)";
+          return;
+        }
+        const Face_handle g = tds.faces().iterator_to(*reinterpret_cast<Face*>(twin & ~flag_bits));
+        const int j = int(twin & index_bits);
+        f->set_neighbor(i, g);
+        g->set_neighbor(j, f);
+        ++out_.edges_tested;
+        if(!is_locally_delaunay(gt, points[v[i]], points[tail], points[head], g->vertex(j)->point()))
+          out_.not_locally_delaunay.emplace_back(f, i);
+      }
+    }
+
+    for(std::uint32_t v = 0; v < n_; ++v)
+      if(vertex_of[v] == Vertex_handle())
+        out_.unused_points.push_back(order.old_index(v));
+    std::sort(out_.unused_points.begin(), out_.unused_points.end());
+    const long long hull_size = 2 * (long long)(out_.vertices_used) - 2 - (long long)(number_of_faces_);
+    if(hull_size < 3 || open.size() != std::size_t(hull_size)) {
+      out_.failure = "the faces leave holes, or do not form a triangulation of their vertices";
+      return;
+    }
+    close_hull(points, open);
+  }
+
+  struct Hull_halfedge
+  {
+    std::uint32_t tail, head;
+    std::uintptr_t code;
+    bool operator<(const Hull_halfedge& other) const { return tail < other.tail; }
+  };
+
+  // Links the unpaired half-edges into one cycle, checks that it is a convex polygon wound
+  // once counterclockwise, and closes the triangulation with the infinite faces.
+  template <class PointIterator>
+  void close_hull(PointIterator points, const Open_halfedges& open)
+  {
+    std::vector<Hull_halfedge> hull;
+    hull.reserve(open.size());
+    open.for_each([&](std::uint32_t smaller, std::uint32_t larger, std::uintptr_t code) {
+      hull.push_back((code & tail_is_smaller_bit) ? Hull_halfedge{smaller, larger, code}
+                                                  : Hull_halfedge{larger, smaller, code});
+    });
+    const std::size_t m = hull.size();
+    std::sort(hull.begin(), hull.end());
+    for(std::size_t k = 1; k < m; ++k)
+      if(hull[k].tail == hull[k - 1].tail) {
+        out_.failure = "the boundary of the faces pinches at a vertex (not a single polygon)";
+        return;
+      }
+    std::vector<std::size_t> cycle; // positions in `hull`, in ccw order
+    cycle.reserve(m);
+    std::size_t at = 0;
+    for(std::size_t k = 0; k < m; ++k) {
+      cycle.push_back(at);
+      const Hull_halfedge probe{hull[at].head, 0, 0};
+      const auto next = std::lower_bound(hull.begin(), hull.end(), probe);
+      if(next == hull.end() || next->tail != probe.tail) {
+        out_.failure = "the boundary of the faces is not closed";
+        return;
+      }
+      at = std::size_t(next - hull.begin());
+      if(at == 0 && k + 1 < m) {
+        out_.failure = "the boundary of the faces has several components (holes)";
+        return;
+      }
+    }
+    if(at != 0 || !is_convex_ccw_cycle(tr_.geom_traits(), m, [&](std::size_t k) -> const Point& {
+         return points[hull[cycle[k]].tail];
+       })) {
+      out_.failure = "the boundary of the faces is not a convex polygon wound once";
+      return;
+    }
+    // The face outside hull half-edge u->v is (v, u, infinite); consecutive ones share the
+    // edge (v, infinite), opposite u in the first and opposite w in the second.
+    auto& tds = tr_.tds();
+    const Vertex_handle infinite = tr_.infinite_vertex();
+    std::vector<Face_handle> outside(m);
+    for(std::size_t k = 0; k < m; ++k) {
+      const std::uintptr_t code = hull[cycle[k]].code;
+      const Face_handle inside = tds.faces().iterator_to(*reinterpret_cast<Face*>(code & ~flag_bits));
+      const int i = int(code & index_bits);
+      outside[k] = tds.create_face(inside->vertex(cw(i)), inside->vertex(ccw(i)), infinite);
+      tds.set_adjacency(outside[k], 2, inside, i);
+    }
+    for(std::size_t k = 0; k < m; ++k)
+      tds.set_adjacency(outside[k], 1, outside[(k + 1) % m], 0);
+    infinite->set_face(outside[0]);
+  }
+
+  Triangulation& tr_;
+  const std::size_t n_, number_of_faces_;
+  Imported_prediction<Triangulation>& out_;
+};
+
+} // namespace internal
+} // namespace Delaunay_from_prediction
+} // namespace CGAL
+
+#endif // CGAL_DELAUNAY_FROM_PREDICTION_INTERNAL_IMPORT_PREDICTION_H

@@ -1,0 +1,76 @@
+// Copyright (c) 2026 Delaunay_from_prediction contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Author(s): Delaunay_from_prediction founding team
+//
+// Stage 1 of the pipeline (check): structural validation of the caller's input. Everything
+// here runs before any caller data is touched, and throws Invalid_prediction naming the
+// offending point, face or index.
+
+#ifndef CGAL_DELAUNAY_FROM_PREDICTION_INTERNAL_INPUT_CHECK_H
+#define CGAL_DELAUNAY_FROM_PREDICTION_INTERNAL_INPUT_CHECK_H
+
+#include <CGAL/Delaunay_from_prediction/Statistics.h>
+#include <CGAL/Delaunay_from_prediction/internal/predicates.h>
+#include <CGAL/number_utils.h>
+
+#include <cstddef>
+#include <cstdint>
+#include <sstream>
+#include <type_traits>
+
+namespace CGAL {
+namespace Delaunay_from_prediction {
+namespace internal {
+
+// Throws if a coordinate of any point is not finite (NaN or infinite).
+template <class PointIterator>
+void check_points_are_finite(PointIterator points, std::size_t n)
+{
+  for(std::size_t i = 0; i < n; ++i) {
+    const auto& p = points[i];
+    if(!CGAL::is_finite(p.x()) || !CGAL::is_finite(p.y())) {
+      std::ostringstream msg;
+      msg << "Delaunay_from_prediction: point " << i << " has a non-finite coordinate ("
+          << CGAL::to_double(p.x()) << ", " << CGAL::to_double(p.y()) << ")";
+      throw Invalid_prediction(msg.str());
+    }
+  }
+}
+
+// Reads the three indices of face number `k` and validates them: each in [0, n), all three
+// different. Works for any face type with operator[](0..2) returning an integer.
+template <class Face>
+void read_face(const Face& face, std::size_t k, std::size_t n, std::size_t out[3])
+{
+  for(int j = 0; j < 3; ++j) {
+    const auto raw = face[j];
+    using Index = std::decay_t<decltype(raw)>;
+    static_assert(std::is_integral<Index>::value,
+                  "Delaunay_from_prediction: face indices must be integers");
+    bool out_of_range = false;
+    if constexpr(std::is_signed<Index>::value)
+      out_of_range = raw < 0 || static_cast<unsigned long long>(raw) >= n;
+    else
+      out_of_range = static_cast<unsigned long long>(raw) >= n;
+    if(out_of_range) {
+      std::ostringstream msg;
+      msg << "Delaunay_from_prediction: face " << k << " has index " << +raw
+          << " (position " << j << "), outside the point range [0, " << n << ")";
+      throw Invalid_prediction(msg.str());
+    }
+    out[j] = static_cast<std::size_t>(raw);
+  }
+  for(int j = 0; j < 3; ++j)
+    if(out[j] == out[ccw(j)]) {
+      std::ostringstream msg;
+      msg << "Delaunay_from_prediction: face " << k << " repeats index " << out[j] << " ("
+          << out[0] << ", " << out[1] << ", " << out[2] << ")";
+      throw Invalid_prediction(msg.str());
+    }
+}
+
+} // namespace internal
+} // namespace Delaunay_from_prediction
+} // namespace CGAL
+
+#endif // CGAL_DELAUNAY_FROM_PREDICTION_INTERNAL_INPUT_CHECK_H

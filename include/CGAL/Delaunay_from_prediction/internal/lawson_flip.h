@@ -1,0 +1,80 @@
+// Copyright (c) 2026 Delaunay_from_prediction contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Author(s): Delaunay_from_prediction founding team
+//
+// Stage 4 of the pipeline (repair): Lawson's edge flips on a CGAL triangulation, seeded only
+// with the edges certification found not locally Delaunay. The one flip engine of the
+// package: delaunay_from_prediction runs it on the triangulation it exported, make_delaunay
+// on the caller's own.
+
+#ifndef CGAL_DELAUNAY_FROM_PREDICTION_INTERNAL_LAWSON_FLIP_H
+#define CGAL_DELAUNAY_FROM_PREDICTION_INTERNAL_LAWSON_FLIP_H
+
+#include <CGAL/Delaunay_from_prediction/internal/predicates.h>
+
+#include <cstddef>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Delaunay_from_prediction {
+namespace internal {
+
+// Flips until every edge is locally Delaunay, or until `max_flips` flips have been made
+// (returns false then; the triangulation is still a valid triangulation of the same
+// vertices). `stack` holds candidate edges (face, index); any edge may be listed, stale or
+// twice: each is tested when popped. `touched` receives both faces of every flip.
+//
+// Termination: with exact predicates each flip strictly lowers the lifted (perturbed)
+// surface, so no triangulation repeats; with an inexact kernel the budget stops a cycle.
+// A flip is made only when both new faces are counterclockwise: with exact predicates an
+// edge that fails the in-circle test always has a strictly convex quadrilateral, so this
+// guard only matters for inexact kernels, where it keeps every face ccw.
+template <class Triangulation>
+bool lawson_flip(Triangulation& tr,
+                 std::vector<std::pair<typename Triangulation::Face_handle, int>>& stack,
+                 std::size_t max_flips, std::size_t& flips,
+                 std::vector<typename Triangulation::Face_handle>& touched)
+{
+  using Face_handle = typename Triangulation::Face_handle;
+  const auto& gt = tr.geom_traits();
+  auto orientation = gt.orientation_2_object();
+  const auto infinite = tr.infinite_vertex();
+  auto& tds = tr.tds();
+  while(!stack.empty()) {
+    const Face_handle f = stack.back().first;
+    const int i = stack.back().second;
+    stack.pop_back();
+    const Face_handle g = f->neighbor(i);
+    if(f->has_vertex(infinite) || g->has_vertex(infinite))
+      continue; // hull edges have no Delaunay condition
+    const int j = tds.mirror_index(f, i);
+    const auto& a = f->vertex(i)->point();
+    const auto& b = f->vertex(ccw(i))->point();
+    const auto& c = f->vertex(cw(i))->point();
+    const auto& d = g->vertex(j)->point();
+    if(is_locally_delaunay(gt, a, b, c, d))
+      continue;
+    if(orientation(a, b, d) != LEFT_TURN || orientation(a, d, c) != LEFT_TURN)
+      continue; // only reachable with an inexact kernel
+    if(flips >= max_flips)
+      return false;
+    // After the flip f = (a, b, d) and g = (d, c, a), with the same slots: their four outer
+    // edges are f's i and cw(i), g's j and cw(j).
+    tds.flip(f, i);
+    ++flips;
+    touched.push_back(f);
+    touched.push_back(g);
+    stack.emplace_back(f, i);
+    stack.emplace_back(f, cw(i));
+    stack.emplace_back(g, j);
+    stack.emplace_back(g, cw(j));
+  }
+  return true;
+}
+
+} // namespace internal
+} // namespace Delaunay_from_prediction
+} // namespace CGAL
+
+#endif // CGAL_DELAUNAY_FROM_PREDICTION_INTERNAL_LAWSON_FLIP_H

@@ -1,0 +1,190 @@
+// Copyright (c) 2026 Delaunay_from_prediction contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Author(s): Delaunay_from_prediction founding team
+//
+// Spatial reordering of a prediction before its import. Points and faces that come in no
+// spatial order (a shuffled mesh, a learned model's output) make every later pass read
+// memory at random; points renumbered along a serpentine grid (a few points per cell) and
+// faces sorted by their smallest new index make those passes touch a narrow band of memory
+// instead. The grid uses floating-point coordinates only to choose an order: no result
+// depends on it. Each step is skipped when a sample shows the input already in order (a
+// mesh file written in mesh order, CGAL's own triangulations, Hilbert-sorted points).
+
+#ifndef CGAL_DELAUNAY_FROM_PREDICTION_INTERNAL_SPATIAL_ORDER_H
+#define CGAL_DELAUNAY_FROM_PREDICTION_INTERNAL_SPATIAL_ORDER_H
+
+#include <CGAL/number_utils.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+namespace CGAL {
+namespace Delaunay_from_prediction {
+namespace internal {
+
+// Sorts `indices` (of points) along a serpentine grid over their bounding box, about four
+// points per cell, rows alternately left to right and right to left, so that consecutive
+// indices name nearby points. With `biased_rounds`, the points are first dealt into rounds
+// (round r with probability 7/8^(r+1), fixed seed) listed from the sparsest, each round in
+// grid order: the biased randomized insertion order (BRIO) that keeps CGAL's incremental
+// insertion fast, at a tenth of the cost of spatial_sort's median splits.
+template <class Index, class PointAt>
+void sort_along_grid(std::vector<Index>& indices, PointAt point_at, bool biased_rounds)
+{
+  const std::size_t m = indices.size();
+  if(m < 2)
+    return;
+  double xmin = CGAL::to_double(point_at(indices[0]).x()), xmax = xmin;
+  double ymin = CGAL::to_double(point_at(indices[0]).y()), ymax = ymin;
+  for(const Index i : indices) {
+    const double x = CGAL::to_double(point_at(i).x()), y = CGAL::to_double(point_at(i).y());
+    xmin = (std::min)(xmin, x);
+    xmax = (std::max)(xmax, x);
+    ymin = (std::min)(ymin, y);
+    ymax = (std::max)(ymax, y);
+  }
+  constexpr std::uint32_t rounds = 8;
+  const std::size_t side = (std::min)(std::size_t(1) << 12,
+                                      (std::max)(std::size_t(1), std::size_t(std::sqrt(double(m) / 4))));
+  const std::size_t cells = side * side;
+  const double sx = xmax > xmin ? double(side) / (xmax - xmin) : 0;
+  const double sy = ymax > ymin ? double(side) / (ymax - ymin) : 0;
+  std::uint64_t state = 0x5eed5eed5eedull;
+  auto random = [&state] { // splitmix64
+    std::uint64_t z = (state += 0x9E3779B97F4A7C15ull);
+    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+    return z ^ (z >> 31);
+  };
+  std::vector<std::uint32_t> key(m);
+  std::vector<std::uint32_t> start((biased_rounds ? rounds : 1) * cells + 1, 0);
+  for(std::size_t k = 0; k < m; ++k) {
+    const auto& p = point_at(indices[k]);
+    const double fx = (CGAL::to_double(p.x()) - xmin) * sx, fy = (CGAL::to_double(p.y()) - ymin) * sy;
+    const std::size_t cx = (std::min)(side - 1, std::size_t(fx > 0 ? fx : 0));
+    const std::size_t cy = (std::min)(side - 1, std::size_t(fy > 0 ? fy : 0));
+    std::uint32_t cell = std::uint32_t(cy * side + ((cy & 1) ? side - 1 - cx : cx));
+    if(biased_rounds) {
+      std::uint32_t round = 0;
+      for(std::uint64_t bits = random(); round + 1 < rounds && (bits & 7) == 0; bits >>= 3)
+        ++round;
+      cell += std::uint32_t((rounds - 1 - round) * cells);
+    }
+    key[k] = cell;
+    ++start[cell + 1];
+  }
+  for(std::size_t c = 1; c < start.size(); ++c)
+    start[c] += start[c - 1];
+  std::vector<Index> sorted(m);
+  for(std::size_t k = 0; k < m; ++k)
+    sorted[start[key[k]]++] = indices[k];
+  indices.swap(sorted);
+}
+
+class Spatial_order
+{
+public:
+  // Below this many points everything a pass touches fits in cache: no reordering.
+  static constexpr std::size_t min_points = 1u << 16;
+
+  // Decides and applies the reordering: renumbers the indices in `triples` (3 per face) and
+  // permutes the faces. Afterwards old_index(v) is the caller's index of new point index v.
+  template <class Gt, class PointIterator>
+  void compute(const Gt&, PointIterator points, std::size_t n, std::vector<std::uint32_t>& triples)
+  {
+    if(n < min_points || triples.size() < 3 * min_points)
+      return;
+    if(!points_look_ordered(triples, n))
+      renumber_points(points, n, triples);
+    if(!faces_look_ordered(triples, n))
+      sort_faces(triples, n);
+  }
+
+  bool renumbered() const { return !old_of_.empty(); }
+  bool faces_sorted() const { return faces_sorted_; }
+  std::uint32_t old_index(std::uint32_t v) const { return old_of_.empty() ? v : old_of_[v]; }
+
+private:
+  static constexpr std::size_t samples = 255;
+
+  // Points are in spatial order if most faces have vertices with close indices. (CGAL's
+  // spatial_sort is not: its multiscale rounds interleave far indices in space.)
+  static bool points_look_ordered(const std::vector<std::uint32_t>& triples, std::size_t n)
+  {
+    const std::size_t faces = triples.size() / 3;
+    std::vector<std::uint32_t> spans;
+    for(std::size_t s = 0; s < samples; ++s) {
+      const std::uint32_t* t = triples.data() + 3 * (s * faces / samples);
+      spans.push_back((std::max)({t[0], t[1], t[2]}) - (std::min)({t[0], t[1], t[2]}));
+    }
+    std::nth_element(spans.begin(), spans.begin() + spans.size() / 2, spans.end());
+    return spans[spans.size() / 2] <= std::uint32_t(4 * std::sqrt(double(n))) + 64;
+  }
+
+  // Faces are in band order if no face's smallest index falls more than a band width below
+  // the largest smallest index seen before it: then a half-edge waits at most about a band
+  // of faces for its twin, and the table of open half-edges stays small. One sequential pass.
+  static bool faces_look_ordered(const std::vector<std::uint32_t>& triples, std::size_t n)
+  {
+    const std::uint32_t band = std::uint32_t(8 * std::sqrt(double(n))) + 64;
+    std::uint32_t highest = 0;
+    for(std::size_t k = 0; k < triples.size(); k += 3) {
+      const std::uint32_t key = (std::min)({triples[k], triples[k + 1], triples[k + 2]});
+      if(key + band < highest)
+        return false;
+      highest = (std::max)(highest, key);
+    }
+    return true;
+  }
+
+  template <class PointIterator>
+  void renumber_points(PointIterator points, std::size_t n, std::vector<std::uint32_t>& triples)
+  {
+    old_of_.resize(n);
+    for(std::size_t i = 0; i < n; ++i)
+      old_of_[i] = std::uint32_t(i);
+    sort_along_grid(old_of_, [&](std::uint32_t i) -> decltype(points[0]) { return points[i]; }, false);
+    std::vector<std::uint32_t> new_of(n);
+    for(std::size_t v = 0; v < n; ++v)
+      new_of[old_of_[v]] = std::uint32_t(v);
+    for(std::uint32_t& v : triples)
+      v = new_of[v];
+  }
+
+  // Counting sort of the faces by their smallest index (in groups of four indices).
+  void sort_faces(std::vector<std::uint32_t>& triples, std::size_t n)
+  {
+    const std::size_t faces = triples.size() / 3;
+    auto key_of = [&](std::size_t f) {
+      const std::uint32_t* t = triples.data() + 3 * f;
+      return (std::min)({t[0], t[1], t[2]}) >> 2;
+    };
+    std::vector<std::uint32_t> start((n >> 2) + 2, 0);
+    for(std::size_t f = 0; f < faces; ++f)
+      ++start[key_of(f) + 1];
+    for(std::size_t c = 1; c < start.size(); ++c)
+      start[c] += start[c - 1];
+    std::vector<std::uint32_t> sorted(triples.size());
+    for(std::size_t f = 0; f < faces; ++f) {
+      std::uint32_t* to = sorted.data() + 3 * std::size_t(start[key_of(f)]++);
+      const std::uint32_t* from = triples.data() + 3 * f;
+      to[0] = from[0];
+      to[1] = from[1];
+      to[2] = from[2];
+    }
+    triples.swap(sorted);
+    faces_sorted_ = true;
+  }
+
+  std::vector<std::uint32_t> old_of_; // new index -> caller's index; empty if not renumbered
+  bool faces_sorted_ = false;
+};
+
+} // namespace internal
+} // namespace Delaunay_from_prediction
+} // namespace CGAL
+
+#endif // CGAL_DELAUNAY_FROM_PREDICTION_INTERNAL_SPATIAL_ORDER_H

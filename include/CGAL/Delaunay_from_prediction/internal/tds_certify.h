@@ -1,0 +1,77 @@
+// Copyright (c) 2026 Delaunay_from_prediction contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Author(s): Delaunay_from_prediction founding team
+//
+// Stage 3 of the pipeline (certify) for a prediction that is already a CGAL triangulation
+// (make_delaunay): the same certificate as for index triples, read off CGAL's TDS, whose
+// combinatorics are a sphere by construction, so only the geometry is checked.
+
+#ifndef CGAL_DELAUNAY_FROM_PREDICTION_INTERNAL_TDS_CERTIFY_H
+#define CGAL_DELAUNAY_FROM_PREDICTION_INTERNAL_TDS_CERTIFY_H
+
+#include <CGAL/Delaunay_from_prediction/internal/predicates.h>
+
+#include <cstddef>
+#include <functional>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Delaunay_from_prediction {
+namespace internal {
+
+// Returns null if `tr` (dimension 2) is a geometric triangulation of its vertices (every
+// finite face ccw, hull a convex polygon wound once: the argument of import_and_certify()
+// applies, the TDS providing the twin pairing), after listing in `non_delaunay` every interior
+// edge that fails the perturbed in-circle test. Otherwise returns why not. Reads only.
+template <class Triangulation>
+const char* certify_triangulation(
+    const Triangulation& tr,
+    std::vector<std::pair<typename Triangulation::Face_handle, int>>& non_delaunay,
+    std::size_t& edges_tested)
+{
+  using Face_handle = typename Triangulation::Face_handle;
+  using Point = typename Triangulation::Point;
+  if(tr.dimension() < 2)
+    return "the triangulation has dimension below 2";
+  const auto& gt = tr.geom_traits();
+  auto orientation = gt.orientation_2_object();
+  const auto infinite = tr.infinite_vertex();
+  const std::less<const void*> before;
+  for(auto f = tr.finite_faces_begin(); f != tr.finite_faces_end(); ++f) {
+    const Point& p0 = f->vertex(0)->point();
+    const Point& p1 = f->vertex(1)->point();
+    const Point& p2 = f->vertex(2)->point();
+    if(orientation(p0, p1, p2) != LEFT_TURN)
+      return "a face is inverted or flat";
+    for(int i = 0; i < 3; ++i) {
+      const Face_handle g = f->neighbor(i);
+      if(!before(&*f, &*g) || g->has_vertex(infinite))
+        continue; // each interior edge once, from its face of lower address
+      ++edges_tested;
+      const Point& d = g->vertex(g->index(Face_handle(f)))->point();
+      if(!is_locally_delaunay(gt, p0, p1, p2, d))
+        non_delaunay.emplace_back(f, i);
+    }
+  }
+  // The hull in ccw order: the face outside hull edge u->v is (v, u, infinite).
+  std::vector<const Point*> hull;
+  const Face_handle start = infinite->face();
+  Face_handle f = start;
+  do {
+    const int i = f->index(infinite);
+    hull.push_back(&f->vertex(cw(i))->point());
+    f = f->neighbor(cw(i));
+  } while(f != start && hull.size() <= tr.number_of_vertices());
+  if(f != start || !is_convex_ccw_cycle(gt, hull.size(), [&](std::size_t k) -> const Point& {
+       return *hull[k];
+     }))
+    return "the hull is not a convex polygon wound once";
+  return nullptr;
+}
+
+} // namespace internal
+} // namespace Delaunay_from_prediction
+} // namespace CGAL
+
+#endif // CGAL_DELAUNAY_FROM_PREDICTION_INTERNAL_TDS_CERTIFY_H

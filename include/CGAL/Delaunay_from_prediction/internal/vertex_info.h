@@ -1,0 +1,48 @@
+// Copyright (c) 2026 Delaunay_from_prediction contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Author(s): Delaunay_from_prediction founding team
+//
+// Vertex info as a point index: detected from the vertex type, so that every entry point
+// works with or without info.
+
+#ifndef CGAL_DELAUNAY_FROM_PREDICTION_INTERNAL_VERTEX_INFO_H
+#define CGAL_DELAUNAY_FROM_PREDICTION_INTERNAL_VERTEX_INFO_H
+
+#include <cstddef>
+#include <type_traits>
+#include <utility>
+
+namespace CGAL {
+namespace Delaunay_from_prediction {
+namespace internal {
+
+template <class Vertex, class = void>
+struct has_index_info : std::false_type {};
+
+template <class Vertex>
+struct has_index_info<Vertex, std::void_t<decltype(std::declval<Vertex&>().info() = std::size_t())>>
+    : std::true_type {};
+
+// Sets the info of `v` to `index` if it has one.
+template <class Vertex_handle>
+void set_index_info(Vertex_handle v, std::size_t index)
+{
+  if constexpr(has_index_info<std::decay_t<decltype(*v)>>::value)
+    v->info() = index;
+}
+
+// `v` already holds a point of index `held`; the point of index `index` equals it. Keeps the
+// smaller index, as the API promises for duplicates.
+template <class Vertex_handle>
+void merge_index_info(Vertex_handle v, std::size_t index)
+{
+  if constexpr(has_index_info<std::decay_t<decltype(*v)>>::value)
+    if(index < static_cast<std::size_t>(v->info()))
+      v->info() = index;
+}
+
+} // namespace internal
+} // namespace Delaunay_from_prediction
+} // namespace CGAL
+
+#endif // CGAL_DELAUNAY_FROM_PREDICTION_INTERNAL_VERTEX_INFO_H

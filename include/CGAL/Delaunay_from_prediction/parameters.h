@@ -1,0 +1,73 @@
+// Copyright (c) 2026 Delaunay_from_prediction contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Author(s): Delaunay_from_prediction founding team
+//
+// Named parameters of the package. CGAL 5.5 pastes a fixed list of tags into
+// Named_function_parameters, so an outside package cannot add `.max_flips()` to CGAL's chain;
+// ours are free functions that take an optional CGAL chain as a second argument:
+// `max_flips(10, CGAL::parameters::verbose(true))`.
+
+#ifndef CGAL_DELAUNAY_FROM_PREDICTION_PARAMETERS_H
+#define CGAL_DELAUNAY_FROM_PREDICTION_PARAMETERS_H
+
+#include <CGAL/Named_function_parameters.h>
+
+namespace CGAL {
+namespace Delaunay_from_prediction {
+
+namespace internal_np {
+enum max_flips_t { max_flips };
+enum screen_prediction_t { screen_prediction };
+} // namespace internal_np
+
+/// \ingroup PkgDelaunayFromPredictionRef
+/// Named parameters of the package; CGAL's own (`CGAL::parameters::...`) are visible here too.
+namespace parameters {
+using namespace CGAL::parameters;
+
+/// limits the number of edge flips; past it the call finishes with a from-scratch build.
+/// \param v the largest number of flips (a `std::size_t`).
+/// \returns the named parameter `max_flips` with value `v`.
+template <class T>
+CGAL::Named_function_parameters<T, internal_np::max_flips_t> max_flips(const T& v)
+{
+  return CGAL::Named_function_parameters<T, internal_np::max_flips_t>(v);
+}
+/// same, chained in front of other named parameters.
+/// \param v the value of the parameter.
+/// \param np the named parameters to chain after it.
+/// \returns the chain `v`, then `np`.
+template <class T, class A, class B, class C>
+CGAL::Named_function_parameters<T, internal_np::max_flips_t, CGAL::Named_function_parameters<A, B, C>>
+max_flips(const T& v, const CGAL::Named_function_parameters<A, B, C>& np)
+{
+  return CGAL::Named_function_parameters<T, internal_np::max_flips_t,
+                                         CGAL::Named_function_parameters<A, B, C>>(v, np);
+}
+
+/// enables (default) or disables the sampling screen that rejects a prediction at once when
+/// sampled faces have sampled points inside their circumcircles.
+/// \param v `true` to screen the prediction (a `bool`).
+/// \returns the named parameter `screen_prediction` with value `v`.
+template <class T>
+CGAL::Named_function_parameters<T, internal_np::screen_prediction_t> screen_prediction(const T& v)
+{
+  return CGAL::Named_function_parameters<T, internal_np::screen_prediction_t>(v);
+}
+/// same, chained in front of other named parameters.
+/// \param v the value of the parameter.
+/// \param np the named parameters to chain after it.
+/// \returns the chain `v`, then `np`.
+template <class T, class A, class B, class C>
+CGAL::Named_function_parameters<T, internal_np::screen_prediction_t, CGAL::Named_function_parameters<A, B, C>>
+screen_prediction(const T& v, const CGAL::Named_function_parameters<A, B, C>& np)
+{
+  return CGAL::Named_function_parameters<T, internal_np::screen_prediction_t,
+                                         CGAL::Named_function_parameters<A, B, C>>(v, np);
+}
+
+} // namespace parameters
+} // namespace Delaunay_from_prediction
+} // namespace CGAL
+
+#endif // CGAL_DELAUNAY_FROM_PREDICTION_PARAMETERS_H

@@ -1,0 +1,482 @@
+// Copyright (c) 2026 Delaunay_from_prediction contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Author(s): Delaunay_from_prediction contributors
+//
+// make_delaunay() on Delaunay_triangulation_2 and Triangulation_2, with and without vertex
+// info (Epick), through a sequence of "time steps" that move the vertices with set_point():
+// no move, small moves that keep every face ccw, large moves that invert faces, a shear, a
+// mirror image, collapse onto a line and back. After every call the triangulation must be
+// CGAL's DT of the moved points, every original vertex handle still in it with its point and
+// info. Then lower dimensions (0 to 3 vertices), and two vertices at the same point: throws
+// Invalid_prediction naming both, and leaves the triangulation as it was.
+
+#include <CGAL/Delaunay_from_prediction_2.h> // first: the header is self-contained
+
+#include "test_util.h"
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+
+#include <functional>
+
+using namespace dfp_test;
+using K = CGAL::Exact_predicates_inexact_constructions_kernel;
+using Point = K::Point_2;
+using Points = std::vector<Point>;
+
+// Calls make_delaunay and checks everything that must hold afterwards.
+template <class Tr, class NP = DFP::parameters::Default_named_parameters>
+DFP::Statistics make_and_check(Tr& tr, const Handles<Tr>& handles,
+                               const NP& np = DFP::parameters::default_values())
+{
+  const Points points = current_points(handles);
+  const std::size_t faces_before = tr.dimension() == 2 ? tr.number_of_faces() : 0;
+  const DFP::Statistics s = DFP::make_delaunay(tr, np);
+  check_handles(tr, handles, points);
+  check_is_cgal_delaunay(tr, points); // info i is point i: also checks the info
+  DFP_CHECK_MSG(s.faces_in == faces_before, s.faces_in << " vs " << faces_before);
+  DFP_CHECK(s.faces_certified <= s.faces_in);
+  DFP_CHECK_MSG(std::string(s.fallback_reason).empty() == !s.fell_back, s.fallback_reason);
+  if(s.fell_back) {
+    DFP_CHECK(s.points_reinserted == points.size());
+  } else {
+    DFP_CHECK(s.points_reinserted == 0);
+    DFP_CHECK(s.edges_not_locally_delaunay <= s.edges_tested);
+    DFP_CHECK((s.flips == 0) == (s.edges_not_locally_delaunay == 0));
+    DFP_CHECK(s.faces_certified + 2 * s.flips >= s.faces_in);
+  }
+  return s;
+}
+
+// Moves one hull vertex just inside the segment joining its two hull neighbours, where every
+// face around it stays ccw: all faces are ccw, but the hull is no longer convex (the vertex
+// will leave the hull). Returns false if no hull vertex allows it.
+template <class Tr>
+bool dent_the_hull(Tr& tr)
+{
+  std::vector<typename Tr::Vertex_handle> hull;
+  auto c = tr.incident_vertices(tr.infinite_vertex()), done = c;
+  do
+    hull.push_back(c);
+  while(++c != done);
+  const std::size_t m = hull.size();
+  for(std::size_t k = 0; k < m; ++k) {
+    const auto v = hull[k];
+    const Point& a = hull[(k + m - 1) % m]->point();
+    const Point& b = hull[(k + 1) % m]->point();
+    const Point mid = CGAL::midpoint(a, b);
+    const Point p = mid + 0.05 * (v->point() - mid) * -1.; // a little beyond the chord, inwards
+    if(CGAL::orientation(a, p, b) == CGAL::orientation(a, v->point(), b))
+      continue; // not reflex
+    bool ccw = true;
+    auto f = tr.incident_faces(v), fdone = f;
+    do
+      if(!tr.is_infinite(f)) {
+        const int i = f->index(v);
+        ccw = ccw && CGAL::orientation(p, f->vertex(tr.ccw(i))->point(), f->vertex(tr.cw(i))->point()) ==
+                         CGAL::LEFT_TURN;
+      }
+    while(++f != fdone);
+    if(ccw) {
+      v->set_point(p);
+      return true;
+    }
+  }
+  return false;
+}
+
+template <class Tr>
+void move_all(const Handles<Tr>& handles, const std::function<Point(const Point&)>& f)
+{
+  for(const auto& v : handles)
+    v->set_point(f(v->point()));
+}
+
+template <class Tr>
+void test_time_steps(const char* name, CGAL::Random& rng)
+{
+  Scope scope(name, ", time steps");
+  const std::size_t n = 1000;
+  const double spacing = 1. / std::sqrt(double(n));
+  Tr tr;
+  Handles<Tr> handles;
+  build(tr, to_points<K>(uniform_points(n, rng)), handles);
+  {
+    Scope step("initial triangulation");
+    make_and_check(tr, handles);
+  }
+  {
+    Scope step("no move (already Delaunay)");
+    const DFP::Statistics s = make_and_check(tr, handles);
+    DFP_CHECK(!s.fell_back);
+    DFP_CHECK(s.flips == 0);
+    DFP_CHECK(s.edges_not_locally_delaunay == 0);
+    DFP_CHECK(s.faces_certified == s.faces_in);
+    DFP_CHECK(s.faces_in == tr.number_of_faces());
+    DFP_CHECK(s.edges_tested == 2 * s.faces_in + 1 - n);
+  }
+  for(double relative : {0.05, 0.3}) {
+    Scope step("small moves (", relative, " of the spacing) keeping every face ccw");
+    const std::size_t moved = move_keeping_faces_ccw(tr, handles, relative * spacing, rng);
+    DFP_CHECK(moved > n / 2);
+    DFP_CHECK(inverted_faces(tr) == 0);
+    const DFP::Statistics s = make_and_check(tr, handles);
+    // A valid triangulation that needs few flips (about n/8 here) is repaired, not rebuilt;
+    // the larger moves need about n/2 flips, near the default budget: either is allowed.
+    if(relative < 0.1)
+      DFP_CHECK_MSG(!s.fell_back, s.fallback_reason << ", " << s.flips << " flips");
+    else
+      DFP_CHECK(s.fell_back || s.flips > 0);
+  }
+  {
+    Scope step("a hull vertex pushed inside its hull edge (faces ccw, hull not convex)");
+    DFP_CHECK(dent_the_hull(tr));
+    DFP_CHECK(inverted_faces(tr) == 0);
+    make_and_check(tr, handles);
+  }
+  {
+    Scope step("shear x += 0.1 y (orientation preserving)");
+    move_all<Tr>(handles, [](const Point& p) { return Point(p.x() + 0.1 * p.y(), p.y()); });
+    const DFP::Statistics s = make_and_check(tr, handles);
+    DFP_CHECK_MSG(!s.fell_back, s.fallback_reason);
+    DFP_CHECK(s.flips > 0);
+  }
+  {
+    Scope step("large moves (2 spacings) inverting faces");
+    move_all<Tr>(handles, [&](const Point& p) {
+      return Point(p.x() + rng.get_double(-2., 2.) * spacing, p.y() + rng.get_double(-2., 2.) * spacing);
+    });
+    DFP_CHECK(inverted_faces(tr) > 0);
+    make_and_check(tr, handles);
+  }
+  {
+    Scope step("mirror image x -> -x (every face inverted)");
+    move_all<Tr>(handles, [](const Point& p) { return Point(-p.x(), p.y()); });
+    DFP_CHECK(inverted_faces(tr) == tr.number_of_faces());
+    const DFP::Statistics s = make_and_check(tr, handles);
+    DFP_CHECK(s.fell_back);
+  }
+  {
+    Scope step("all points moved onto a line (dimension 2 -> 1)");
+    std::size_t k = 0;
+    move_all<Tr>(handles, [&](const Point&) {
+      const double x = double(k++);
+      return Point(x, 3. * x - 2.);
+    });
+    make_and_check(tr, handles);
+    DFP_CHECK(tr.dimension() == 1);
+  }
+  {
+    Scope step("moved along the line, shuffled (dimension 1 -> 1)");
+    std::vector<double> xs;
+    for(std::size_t k = 0; k < n; ++k)
+      xs.push_back(double(k) * 0.5);
+    shuffle(xs, rng);
+    std::size_t k = 0;
+    move_all<Tr>(handles, [&](const Point&) {
+      const double x = xs[k++];
+      return Point(x, 3. * x - 2.);
+    });
+    make_and_check(tr, handles);
+    DFP_CHECK(tr.dimension() == 1);
+  }
+  {
+    Scope step("one point moved off the line (dimension 1 -> 2)");
+    handles[n / 2]->set_point(Point(10., 0.));
+    make_and_check(tr, handles);
+    DFP_CHECK(tr.dimension() == 2);
+  }
+  {
+    Scope step("spread out again at random (dimension 2, random points)");
+    move_all<Tr>(handles, [&](const Point&) { return Point(rng.get_double(), rng.get_double()); });
+    make_and_check(tr, handles);
+    DFP_CHECK(tr.dimension() == 2);
+  }
+  {
+    Scope step("onto an integer grid (co-circular ties)");
+    std::vector<std::size_t> order(n);
+    for(std::size_t k = 0; k < n; ++k)
+      order[k] = k;
+    shuffle(order, rng);
+    std::size_t k = 0;
+    move_all<Tr>(handles, [&](const Point&) {
+      const std::size_t c = order[k++];
+      return Point(double(c % 40), double(c / 40));
+    });
+    make_and_check(tr, handles);
+  }
+  {
+    Scope step("grid, then small moves keeping faces ccw");
+    move_keeping_faces_ccw(tr, handles, 0.3, rng);
+    make_and_check(tr, handles);
+  }
+}
+
+// A non-Delaunay Triangulation_2 repaired with a large flip budget: Lawson's path, not a rebuild.
+template <class Tr>
+void test_large_budget(const char* name, CGAL::Random& rng)
+{
+  Scope scope(name, ", Lawson repair with max_flips(100 n)");
+  const std::size_t n = 1000;
+  Tr tr;
+  Handles<Tr> handles;
+  build(tr, to_points<K>(clustered_points(n, rng)), handles);
+  flip_randomly(tr, 50, rng);
+  const DFP::Statistics s = make_and_check(tr, handles, DFP::parameters::max_flips(100 * n));
+  DFP_CHECK_MSG(!s.fell_back, s.fallback_reason);
+  DFP_CHECK(s.flips > 0);
+}
+
+template <class Tr>
+void test_small_dimensions(const char* name, CGAL::Random& rng)
+{
+  Scope scope(name, ", small dimensions");
+  {
+    Scope c("no vertex");
+    Tr tr;
+    const DFP::Statistics s = DFP::make_delaunay(tr);
+    DFP_CHECK(tr.number_of_vertices() == 0);
+    DFP_CHECK(tr.dimension() == -1);
+    DFP_CHECK(tr.is_valid());
+    DFP_CHECK(s.faces_in == 0 && s.flips == 0);
+  }
+  {
+    Scope c("one vertex, moved");
+    Tr tr;
+    Handles<Tr> handles;
+    build(tr, Points{Point(1., 2.)}, handles);
+    handles[0]->set_point(Point(-5., 7.));
+    make_and_check(tr, handles);
+    DFP_CHECK(tr.dimension() == 0);
+  }
+  {
+    Scope c("two vertices, moved");
+    Tr tr;
+    Handles<Tr> handles;
+    build(tr, Points{Point(1., 2.), Point(3., 4.)}, handles);
+    handles[0]->set_point(Point(10., 10.));
+    handles[1]->set_point(Point(-10., 10.));
+    make_and_check(tr, handles);
+    DFP_CHECK(tr.dimension() == 1);
+  }
+  {
+    Scope c("three vertices, moved to a line, then swapped along it, then off it");
+    Tr tr;
+    Handles<Tr> handles;
+    build(tr, Points{Point(0., 0.), Point(1., 0.), Point(0., 1.)}, handles);
+    handles[2]->set_point(Point(2., 0.));
+    make_and_check(tr, handles);
+    DFP_CHECK(tr.dimension() == 1);
+    handles[0]->set_point(Point(5., 0.)); // now 1 (1,0) - 2 (2,0) - 0 (5,0)
+    make_and_check(tr, handles);
+    DFP_CHECK(tr.dimension() == 1);
+    handles[1]->set_point(Point(3., -1.));
+    make_and_check(tr, handles);
+    DFP_CHECK(tr.dimension() == 2);
+    handles[1]->set_point(Point(3., 1.)); // the one face is now inverted
+    make_and_check(tr, handles);
+    DFP_CHECK(tr.dimension() == 2);
+  }
+  {
+    // A centre and a convex pentagon (its DT is the fan around the centre); the five hull
+    // vertices are moved so that, in their combinatorial ccw order, they visit the pentagon
+    // in pentagram order: every face is still ccw and every hull turn is a left turn, but the
+    // hull winds twice around the centre.
+    Scope c("fan of a pentagon, hull moved to wind twice");
+    const Points pentagon = {Point(1000, 0), Point(309, 951), Point(-809, 588), Point(-809, -588),
+                             Point(309, -951)};
+    Tr tr;
+    Handles<Tr> handles;
+    Points points = pentagon;
+    points.push_back(Point(0, 0));
+    build(tr, points, handles);
+    make_and_check(tr, handles);
+    const auto centre = handles[5];
+    DFP_CHECK(tr.degree(centre) == 5);
+    auto w = tr.incident_vertices(centre), done = w;
+    std::size_t k = 0;
+    do
+      w->set_point(pentagon[(2 * k++) % 5]);
+    while(++w != done);
+    DFP_CHECK(inverted_faces(tr) == 0);
+    const DFP::Statistics s = make_and_check(tr, handles);
+    DFP_CHECK(s.fell_back);
+  }
+  {
+    Scope c("collinear points, a few moved off their line");
+    Tr tr;
+    Handles<Tr> handles;
+    build(tr, to_points<K>(collinear_points(30, rng)), handles);
+    DFP_CHECK(tr.dimension() == 1);
+    make_and_check(tr, handles);
+    handles[3]->set_point(Point(0.5, 40.));
+    handles[7]->set_point(Point(-3., -40.));
+    make_and_check(tr, handles);
+    DFP_CHECK(tr.dimension() == 2);
+  }
+}
+
+template <class Tr>
+std::size_t finite_rank(const Tr& tr, typename Tr::Vertex_handle v)
+{
+  std::size_t rank = 0;
+  for(auto w = tr.finite_vertices_begin(); w != tr.finite_vertices_end(); ++w, ++rank)
+    if(&*w == &*v)
+      return rank;
+  return std::size_t(-1);
+}
+
+// Moves handles a and b to p and q (p == q, or one of them the other's current point) and
+// expects make_delaunay to throw, naming both vertices, and to leave tr as it was.
+template <class Tr>
+void expect_collision(Tr& tr, const Handles<Tr>& handles, std::size_t a, std::size_t b,
+                      const Point& p, const Point& q)
+{
+  const Point old_a = handles[a]->point(), old_b = handles[b]->point();
+  const Geometry<Point> geometry = geometry_of(tr);
+  handles[a]->set_point(p);
+  handles[b]->set_point(q);
+  const Snapshot<Tr> before(tr);
+  const std::size_t rank_a = finite_rank(tr, handles[a]), rank_b = finite_rank(tr, handles[b]);
+  bool thrown = false;
+  try {
+    DFP::make_delaunay(tr);
+  } catch(const DFP::Invalid_prediction& e) {
+    thrown = true;
+    const std::string what = e.what();
+    DFP_CHECK_MSG(mentions_number(what, rank_a) && mentions_number(what, rank_b),
+                  "ranks " << rank_a << ", " << rank_b << ": " << what);
+  }
+  DFP_CHECK(thrown);
+  check_unchanged(tr, before);
+  // Put the points back: the triangulation is the valid one it was before the moves.
+  handles[a]->set_point(old_a);
+  handles[b]->set_point(old_b);
+  DFP_CHECK(tr.is_valid());
+  check_handles(tr, handles, current_points(handles));
+  const Geometry<Point> after = geometry_of(tr);
+  DFP_CHECK(after.vertices == geometry.vertices && after.edges == geometry.edges &&
+            after.faces == geometry.faces);
+}
+
+template <class Tr>
+void test_collisions(const char* name, CGAL::Random& rng)
+{
+  Scope scope(name, ", two vertices at the same point");
+  {
+    Scope c("2D, one vertex moved onto another (far apart)");
+    Tr tr;
+    Handles<Tr> handles;
+    build(tr, to_points<K>(uniform_points(300, rng)), handles);
+    DFP::make_delaunay(tr);
+    expect_collision(tr, handles, 17, 211, handles[211]->point(), handles[211]->point());
+    Scope d("then both moved to a new common point");
+    expect_collision(tr, handles, 5, 250, Point(0.5, 0.5), Point(0.5, 0.5));
+    Scope e("then the two last ranks in finite-vertex order");
+    std::vector<typename Tr::Vertex_handle> order;
+    for(auto v = tr.finite_vertices_begin(); v != tr.finite_vertices_end(); ++v)
+      order.push_back(v);
+    const std::size_t a = std::size_t(std::find(handles.begin(), handles.end(), order[298]) - handles.begin());
+    const std::size_t b = std::size_t(std::find(handles.begin(), handles.end(), order[299]) - handles.begin());
+    expect_collision(tr, handles, a, b, Point(2., 2.), Point(2., 2.));
+    Scope f("then a valid call still works");
+    make_and_check(tr, handles);
+  }
+  {
+    Scope c("2D, neighbours moved together, the rest moved too");
+    Tr tr;
+    Handles<Tr> handles;
+    build(tr, to_points<K>(uniform_points(50, rng)), handles);
+    const auto v = handles[10];
+    const auto w = tr.incident_vertices(v);
+    std::size_t b = 0;
+    auto c2 = w;
+    while(tr.is_infinite(c2))
+      ++c2;
+    b = std::size_t(std::find(handles.begin(), handles.end(), typename Tr::Vertex_handle(c2)) - handles.begin());
+    expect_collision(tr, handles, 10, b, handles[b]->point(), handles[b]->point());
+  }
+  {
+    Scope c("dimension 1");
+    Tr tr;
+    Handles<Tr> handles;
+    build(tr, to_points<K>(collinear_points(10, rng)), handles);
+    expect_collision(tr, handles, 2, 8, handles[8]->point(), handles[8]->point());
+  }
+  {
+    Scope c("two vertices (dimension 1 -> would be 0)");
+    Tr tr;
+    Handles<Tr> handles;
+    build(tr, Points{Point(0., 0.), Point(1., 1.)}, handles);
+    expect_collision(tr, handles, 0, 1, Point(3., 3.), Point(3., 3.));
+  }
+  {
+    Scope c("three vertices, dimension 2");
+    Tr tr;
+    Handles<Tr> handles;
+    build(tr, Points{Point(0., 0.), Point(1., 0.), Point(0., 1.)}, handles);
+    expect_collision(tr, handles, 0, 1, Point(1., 0.), Point(1., 0.)); // 0 onto 1's point
+  }
+}
+
+// A user's vertex base derived from CGAL's: the vertex objects, and so their members, survive.
+template <class Tr>
+void test_colored(const char* name, CGAL::Random& rng)
+{
+  Scope scope(name);
+  Tr tr;
+  Handles<Tr> handles;
+  build(tr, to_points<K>(uniform_points(500, rng)), handles);
+  for(std::size_t i = 0; i < handles.size(); ++i)
+    handles[i]->color = int(i);
+  auto check_colors = [&] {
+    bool colors = true;
+    for(std::size_t i = 0; i < handles.size(); ++i)
+      colors = colors && handles[i]->color == int(i);
+    DFP_CHECK(colors);
+  };
+  make_and_check(tr, handles);
+  check_colors();
+  move_all<Tr>(handles, [&](const Point& p) {
+    return Point(p.x() + rng.get_double(-0.1, 0.1), p.y() + rng.get_double(-0.1, 0.1));
+  });
+  make_and_check(tr, handles);
+  check_colors();
+  move_keeping_faces_ccw(tr, handles, 0.01, rng);
+  make_and_check(tr, handles);
+  check_colors();
+}
+
+template <class Tr>
+void test_type(const char* name, CGAL::Random& rng)
+{
+  DFP_RUN(test_time_steps<Tr>(name, rng));
+  DFP_RUN(test_large_budget<Tr>(name, rng));
+  DFP_RUN(test_small_dimensions<Tr>(name, rng));
+  DFP_RUN(test_collisions<Tr>(name, rng));
+}
+
+int main()
+{
+  CGAL::Random rng(4242);
+  test_type<DT_plain<K>>("Delaunay_triangulation_2 without info", rng);
+  test_type<DT_with_info<K>>("Delaunay_triangulation_2 with size_t info", rng);
+  test_type<T2_plain<K>>("Triangulation_2 without info", rng);
+  test_type<T2_with_info<K, int>>("Triangulation_2 with int info", rng);
+  DFP_RUN(test_colored<DT_colored<K>>("Delaunay_triangulation_2 with a user's vertex base", rng));
+  DFP_RUN(test_colored<T2_colored<K>>("Triangulation_2 with a user's vertex base", rng));
+  {
+    Scope scope("Delaunay_triangulation_2 with non-index info");
+    DT_labeled<K> tr;
+    const Points points = to_points<K>(uniform_points(300, rng));
+    tr.insert(points.begin(), points.end());
+    for(auto v = tr.finite_vertices_begin(); v != tr.finite_vertices_end(); ++v)
+      v->set_point(Point(v->point().x() * 2. + rng.get_double(-0.05, 0.05), v->point().y()));
+    DFP::make_delaunay(tr);
+    check_is_cgal_delaunay(tr, current_points(Handles<DT_labeled<K>>(tr.finite_vertex_handles().begin(), tr.finite_vertex_handles().end())));
+    bool labels = true;
+    for(auto v = tr.finite_vertices_begin(); v != tr.finite_vertices_end(); ++v)
+      labels = labels && v->info().value == -3;
+    DFP_CHECK(labels);
+  }
+  return finish("test_make_delaunay");
+}

@@ -1,0 +1,241 @@
+// Copyright (c) 2026 Delaunay_from_prediction contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Author(s): Delaunay_from_prediction contributors
+//
+// Named parameters (Epick): max_flips(n) is an exact budget (a prediction needing f flips
+// succeeds with max_flips(f) and falls back with max_flips(f - 1), the result exact either
+// way), max_flips(0) forces a fallback, for delaunay_from_prediction() and make_delaunay();
+// screen_prediction(bool): good predictions pass the sampling screen at n >= 4096, random
+// triples at n >= 5000 fall back with it and without it; chaining with CGAL's parameters.
+
+#include <CGAL/Delaunay_from_prediction_2.h> // first: the header is self-contained
+
+#include "test_util.h"
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+
+#include <list>
+
+using namespace dfp_test;
+using K = CGAL::Exact_predicates_inexact_constructions_kernel;
+using Point = K::Point_2;
+using Points = std::vector<Point>;
+using DT = DT_with_info<K>;
+namespace NP = CGAL::Delaunay_from_prediction::parameters;
+
+template <class FaceRange, class Parameters>
+DFP::Statistics run(const Points& points, const FaceRange& faces, const Faces& as_indices,
+                    const Parameters& np)
+{
+  DT dt;
+  const DFP::Statistics s = DFP::delaunay_from_prediction(points, faces, dt, np);
+  check_is_cgal_delaunay(dt, points);
+  check_statistics(s, as_indices, points, dt);
+  return s;
+}
+
+template <class Parameters>
+DFP::Statistics run(const Points& points, const Faces& faces, const Parameters& np)
+{
+  return run(points, faces, faces, np);
+}
+
+void test_max_flips(CGAL::Random& rng)
+{
+  const Points points = to_points<K>(uniform_points(2000, rng));
+  const Faces faces = flipped_delaunay_faces<K>(points, 40, rng);
+  const std::size_t needed = [&] {
+    Scope s("unlimited budget");
+    const DFP::Statistics st = run(points, faces, NP::max_flips(std::size_t(-1)));
+    DFP_CHECK(!st.fell_back);
+    DFP_CHECK(st.flips > 0);
+    DFP_CHECK(st.flips >= edges_not_in_delaunay<K>(faces, points));
+    return st.flips;
+  }();
+  {
+    Scope s("max_flips(0)");
+    const DFP::Statistics st = run(points, faces, NP::max_flips(0));
+    DFP_CHECK(st.fell_back);
+    DFP_CHECK(st.flips == 0);
+    DFP_CHECK(std::string(st.fallback_reason).size() > 0);
+    DFP_CHECK(st.faces_certified == 0);
+  }
+  {
+    Scope s("max_flips(needed) (int)");
+    const DFP::Statistics st = run(points, faces, NP::max_flips(int(needed)));
+    DFP_CHECK(!st.fell_back);
+    DFP_CHECK(st.flips == needed);
+  }
+  {
+    Scope s("max_flips(needed - 1)");
+    const DFP::Statistics st = run(points, faces, NP::max_flips(needed - 1));
+    DFP_CHECK(st.fell_back);
+    DFP_CHECK(st.flips <= needed - 1);
+  }
+  {
+    Scope s("max_flips(0) on the DT itself: no flip needed, no fallback");
+    const DFP::Statistics st = run(points, delaunay_faces<K>(points), NP::max_flips(0));
+    DFP_CHECK(!st.fell_back);
+    DFP_CHECK(st.faces_certified == st.faces_in);
+  }
+  {
+    Scope s("max_flips(0, CGAL::parameters::verbose(false))");
+    const DFP::Statistics st = run(points, faces, NP::max_flips(0, CGAL::parameters::verbose(false)));
+    DFP_CHECK(st.fell_back);
+  }
+  {
+    Scope s("max_flips(needed).verbose(false)");
+    const DFP::Statistics st = run(points, faces, NP::max_flips(needed).verbose(false));
+    DFP_CHECK(!st.fell_back);
+  }
+  {
+    Scope s("screen_prediction(false, max_flips(0))");
+    const DFP::Statistics st = run(points, faces, NP::screen_prediction(false, NP::max_flips(0)));
+    DFP_CHECK(st.fell_back);
+  }
+  {
+    Scope s("max_flips(needed, screen_prediction(true))");
+    const DFP::Statistics st = run(points, faces, NP::max_flips(needed, NP::screen_prediction(true)));
+    DFP_CHECK(!st.fell_back);
+  }
+}
+
+void test_make_delaunay_budget(CGAL::Random& rng)
+{
+  const Points points = to_points<K>(uniform_points(1000, rng));
+  auto prepare = [&](DT& tr, Handles<DT>& handles) {
+    build(tr, points, handles);
+    flip_randomly(tr, 30, rng);
+  };
+  {
+    Scope s("make_delaunay, unlimited budget");
+    DT tr;
+    Handles<DT> handles;
+    prepare(tr, handles);
+    const DFP::Statistics st = DFP::make_delaunay(tr, NP::max_flips(std::size_t(-1)));
+    check_handles(tr, handles, points);
+    check_is_cgal_delaunay(tr, points);
+    DFP_CHECK(!st.fell_back);
+    DFP_CHECK(st.flips > 0);
+  }
+  {
+    Scope s("make_delaunay, max_flips(0) on a non-Delaunay triangulation");
+    DT tr;
+    Handles<DT> handles;
+    build(tr, points, handles);
+    DFP_CHECK(flip_randomly(tr, 10, rng) == 10);
+    const DFP::Statistics st = DFP::make_delaunay(tr, NP::max_flips(0, CGAL::parameters::verbose(false)));
+    check_handles(tr, handles, points);
+    check_is_cgal_delaunay(tr, points);
+    DFP_CHECK(st.fell_back);
+    DFP_CHECK(st.flips == 0);
+  }
+  {
+    Scope s("make_delaunay, max_flips(0) on a Delaunay triangulation");
+    DT tr;
+    Handles<DT> handles;
+    build(tr, points, handles);
+    const DFP::Statistics st = DFP::make_delaunay(tr, NP::max_flips(0));
+    check_handles(tr, handles, points);
+    check_is_cgal_delaunay(tr, points);
+    DFP_CHECK(!st.fell_back);
+  }
+}
+
+// The exact budget boundary for make_delaunay, on one fixed triangulation.
+void test_make_delaunay_boundary()
+{
+  CGAL::Random rng(123);
+  const Points points = to_points<K>(clustered_points(800, rng));
+  auto flipped = [&](DT& tr, Handles<DT>& handles) {
+    build(tr, points, handles);
+    CGAL::Random replay(77);
+    return flip_randomly(tr, 25, replay);
+  };
+  DT reference;
+  Handles<DT> reference_handles;
+  DFP_CHECK(flipped(reference, reference_handles) == 25);
+  const DFP::Statistics unlimited = DFP::make_delaunay(reference);
+  DFP_CHECK(!unlimited.fell_back);
+  const std::size_t needed = unlimited.flips;
+  DFP_CHECK(needed > 0);
+  for(std::size_t budget : {needed, needed - 1}) {
+    Scope s("make_delaunay, max_flips(", budget, "), ", needed, " flips needed");
+    DT tr;
+    Handles<DT> handles;
+    flipped(tr, handles);
+    const DFP::Statistics st = DFP::make_delaunay(tr, NP::max_flips(budget));
+    DFP_CHECK(st.fell_back == (budget < needed));
+    check_handles(tr, handles, points);
+    check_is_cgal_delaunay(tr, points);
+  }
+}
+
+void test_screen(CGAL::Random& rng)
+{
+  const std::size_t n = 5000;
+  const XYs xy = uniform_points(n, rng);
+  const Points points = to_points<K>(xy);
+  const Faces dt_faces = delaunay_faces<K>(points);
+  for(bool screen : {true, false}) {
+    Scope s("screen_prediction(", screen, "), n = ", n);
+    {
+      Scope c("the DT itself");
+      const DFP::Statistics st = run(points, shuffled(dt_faces, rng), NP::screen_prediction(screen));
+      DFP_CHECK(!st.fell_back);
+      DFP_CHECK(st.faces_certified == st.faces_in);
+    }
+    {
+      Scope c("the DT after n/100 flips");
+      const DFP::Statistics st =
+          run(points, flipped_delaunay_faces<K>(points, n / 100, rng), NP::screen_prediction(screen));
+      DFP_CHECK_MSG(!st.fell_back, st.fallback_reason);
+      DFP_CHECK(st.flips > 0);
+    }
+    {
+      Scope c("the DT of a subset (half the points)");
+      const DFP::Statistics st =
+          run(points, delaunay_faces<K>(Points(points.begin(), points.begin() + n / 2)),
+              NP::screen_prediction(screen));
+      DFP_CHECK_MSG(!st.fell_back, st.fallback_reason);
+    }
+    {
+      Scope c("random triples");
+      const DFP::Statistics st = run(points, random_triples(n, 2 * n, rng), NP::screen_prediction(screen));
+      DFP_CHECK(st.fell_back);
+    }
+    {
+      Scope c("random triples in a std::list (no random access)");
+      const Faces triples = random_triples(n, 2 * n, rng);
+      const std::list<Face> faces(triples.begin(), triples.end());
+      const DFP::Statistics st = run(points, faces, triples, NP::screen_prediction(screen));
+      DFP_CHECK(st.fell_back);
+    }
+  }
+  {
+    Scope s("default parameters, random triples, n = ", n);
+    const Faces triples = random_triples(n, 2 * n, rng);
+    DT dt;
+    const DFP::Statistics st = DFP::delaunay_from_prediction(points, triples, dt);
+    check_is_cgal_delaunay(dt, points);
+    check_statistics(st, triples, points, dt);
+    DFP_CHECK(st.fell_back);
+  }
+  {
+    Scope s("integer grid 70 x 70 (co-circular: on-circle points are not inside), screen on");
+    const Points grid = to_points<K>(grid_points(70, 70, rng));
+    const DFP::Statistics st = run(grid, delaunay_faces<K>(grid), NP::screen_prediction(true));
+    DFP_CHECK(!st.fell_back);
+    DFP_CHECK(st.faces_certified == st.faces_in);
+  }
+}
+
+int main()
+{
+  CGAL::Random rng(8080);
+  DFP_RUN(test_max_flips(rng));
+  DFP_RUN(test_make_delaunay_budget(rng));
+  DFP_RUN(test_make_delaunay_boundary());
+  DFP_RUN(test_screen(rng));
+  return finish("test_named_parameters");
+}
