@@ -227,7 +227,9 @@ private:
 // per-vertex lists indexed by u modulo a power of two. Faces arrive in band order (sorted by
 // smallest index, spatial_order.h), so the endpoints with waiting half-edges lie in a window
 // narrower than the ring and a lookup is a scan of a few entries in cache. A list that is full,
-// or whose ring slot is claimed by a later vertex, spills into Open_halfedge_table.
+// or whose ring slot is claimed by a later vertex, spills into Open_halfedge_table; one bit per
+// vertex says whether it has spilled, so that the table is only searched for those (hull
+// half-edges wait forever and would otherwise keep it busy).
 class Open_halfedges
 {
 public:
@@ -243,6 +245,7 @@ public:
       size <<= 1;
     lists_.assign(size, List{none, 0, {}, {}});
     mask_ = size - 1;
+    spilled_.assign(n / 64 + 1, 0);
   }
 
   // If the twin of the half-edge with endpoints u < x is open, closes it and returns true with
@@ -252,7 +255,7 @@ public:
     List& list = lists_[u & mask_];
     if(list.owner != u) {
       for(std::uint32_t k = 0; k < list.count; ++k)
-        spill_.insert(Open_halfedge_table::edge_key(list.owner, list.other[k]), list.code[k]);
+        spill(list.owner, list.other[k], list.code[k]);
       list.owner = u;
       list.count = 0;
     }
@@ -265,7 +268,8 @@ public:
         --open_;
         return true;
       }
-    if(spill_.take(Open_halfedge_table::edge_key(u, x), twin)) {
+    if(((spilled_[u >> 6] >> (u & 63)) & 1) != 0 &&
+       spill_.take(Open_halfedge_table::edge_key(u, x), twin)) {
       --open_;
       return true;
     }
@@ -275,7 +279,7 @@ public:
       list.code[list.count] = code;
       ++list.count;
     } else {
-      spill_.insert(Open_halfedge_table::edge_key(u, x), code);
+      spill(u, x, code);
     }
     return false;
   }
@@ -300,9 +304,16 @@ private:
     std::uint32_t other[capacity];
     std::uintptr_t code[capacity];
   };
+  void spill(std::uint32_t u, std::uint32_t x, std::uintptr_t code)
+  {
+    spill_.insert(Open_halfedge_table::edge_key(u, x), code);
+    spilled_[u >> 6] |= std::uint64_t(1) << (u & 63);
+  }
+
   std::vector<List> lists_;
   std::size_t mask_ = 0, open_ = 0;
   Open_halfedge_table spill_;
+  std::vector<std::uint64_t> spilled_; // one bit per vertex: has it spilled?
 };
 
 template <class Triangulation>

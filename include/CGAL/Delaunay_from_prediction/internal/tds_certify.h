@@ -38,6 +38,20 @@ const char* certify_triangulation(
   auto orientation = gt.orientation_2_object();
   const auto infinite = tr.infinite_vertex();
   const std::less<const void*> before;
+  // The hull first (it is short, and a reflex hull vertex needs no face loop to show), in
+  // ccw order: the face outside hull edge u->v is (v, u, infinite).
+  std::vector<const Point*> hull;
+  const Face_handle start = infinite->face();
+  Face_handle outside = start;
+  do {
+    const int i = outside->index(infinite);
+    hull.push_back(&outside->vertex(cw(i))->point());
+    outside = outside->neighbor(cw(i));
+  } while(outside != start && hull.size() <= tr.number_of_vertices());
+  if(outside != start || !is_convex_ccw_cycle(gt, hull.size(), [&](std::size_t k) -> const Point& {
+       return *hull[k];
+     }))
+    return "the hull is not a convex polygon wound once";
   for(auto f = tr.finite_faces_begin(); f != tr.finite_faces_end(); ++f) {
     const Point& p0 = f->vertex(0)->point();
     const Point& p1 = f->vertex(1)->point();
@@ -54,19 +68,6 @@ const char* certify_triangulation(
         non_delaunay.emplace_back(f, i);
     }
   }
-  // The hull in ccw order: the face outside hull edge u->v is (v, u, infinite).
-  std::vector<const Point*> hull;
-  const Face_handle start = infinite->face();
-  Face_handle f = start;
-  do {
-    const int i = f->index(infinite);
-    hull.push_back(&f->vertex(cw(i))->point());
-    f = f->neighbor(cw(i));
-  } while(f != start && hull.size() <= tr.number_of_vertices());
-  if(f != start || !is_convex_ccw_cycle(gt, hull.size(), [&](std::size_t k) -> const Point& {
-       return *hull[k];
-     }))
-    return "the hull is not a convex polygon wound once";
   return nullptr;
 }
 
