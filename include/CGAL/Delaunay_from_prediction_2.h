@@ -18,6 +18,7 @@
 
 #include <CGAL/Delaunay_from_prediction/Statistics.h>
 #include <CGAL/Delaunay_from_prediction/parameters.h>
+#include <CGAL/Delaunay_from_prediction/internal/hull_repair.h>
 #include <CGAL/Delaunay_from_prediction/internal/import_prediction.h>
 #include <CGAL/Delaunay_from_prediction/internal/input_check.h>
 #include <CGAL/Delaunay_from_prediction/internal/lawson_flip.h>
@@ -45,15 +46,21 @@ namespace internal {
 // Triangulation_2 of random points needs ~6n) is cheaper to rebuild.
 inline std::size_t default_max_flips(std::size_t n) { return n / 2 + 64; }
 
-// Number of distinct faces in `faces`.
+// Number of distinct faces in `faces`, not counting those whose address is in `except`.
 template <class Face_handle>
-std::size_t count_distinct(std::vector<Face_handle>& faces)
+std::size_t count_distinct(const std::vector<Face_handle>& faces,
+                           std::vector<const void*> except = std::vector<const void*>())
 {
   std::vector<const void*> addresses(faces.size());
   for(std::size_t k = 0; k < faces.size(); ++k)
     addresses[k] = &*faces[k];
   std::sort(addresses.begin(), addresses.end());
-  return std::size_t(std::unique(addresses.begin(), addresses.end()) - addresses.begin());
+  addresses.erase(std::unique(addresses.begin(), addresses.end()), addresses.end());
+  std::sort(except.begin(), except.end());
+  std::size_t count = 0;
+  for(const void* a : addresses)
+    count += std::binary_search(except.begin(), except.end(), a) ? 0 : 1;
+  return count;
 }
 
 } // namespace internal
@@ -151,6 +158,7 @@ Statistics delaunay_from_prediction(const PointRange& points, const FaceRange& f
     dt.swap(fresh);
     return stats;
   };
+  stats.input_reordered = imported.reordered;
   if(imported.failure != nullptr)
     return build_from_scratch(imported.failure);
   stats.edges_tested = imported.edges_tested;
@@ -194,10 +202,10 @@ turns a CGAL triangulation into the Delaunay triangulation of its own vertices, 
 
 The points of `tr` may have been moved with `Vertex::set_point()`, even so far that faces are
 inverted or the dimension changes. Vertex handles and their `info()` survive; face handles need
-not. A triangulation whose faces are all counterclockwise and whose hull is convex is
-certified in linear time and repaired by Lawson flips started at its non-locally-Delaunay
-edges; otherwise (or past the flip budget) its faces are rebuilt around the same vertex
-objects (`Statistics::fell_back`).
+not. A triangulation whose faces are all counterclockwise is certified in linear time; a
+hull that is no longer convex is repaired by flips of hull edges; then Lawson flips start at
+the non-locally-Delaunay edges. Otherwise (an inverted or flat face, or past the flip budget)
+its faces are rebuilt around the same vertex objects (`Statistics::fell_back`).
 
 \tparam Triangulation a `CGAL::Triangulation_2<Gt, Tds>` or `CGAL::Delaunay_triangulation_2<Gt, Tds>`,
         for any triangulation data structure.
@@ -234,12 +242,18 @@ Statistics make_delaunay(Triangulation& tr, const NamedParameters& np = paramete
     return stats;
 
   std::vector<std::pair<Face_handle, int>> stack;
-  const char* why = internal::certify_triangulation(tr, stack, stats.edges_tested);
-  if(why == nullptr) {
+  bool hull_is_convex = false;
+  const char* why = internal::certify_triangulation(tr, stack, stats.edges_tested, hull_is_convex);
+  if(why == nullptr)
     stats.edges_not_locally_delaunay = stack.size();
+  std::vector<const void*> hull_faces; // finite faces made by convexify_hull
+  if(why == nullptr && !hull_is_convex &&
+     !internal::convexify_hull(tr, stack, hull_faces, stats.flips))
+    why = "the hull is not a convex polygon wound once, and no flip of hull edges makes it one";
+  if(why == nullptr) {
     std::vector<Face_handle> touched;
     if(internal::lawson_flip(tr, stack, max_flips, stats.flips, touched)) {
-      stats.faces_certified = stats.faces_in - internal::count_distinct(touched);
+      stats.faces_certified = stats.faces_in - internal::count_distinct(touched, hull_faces);
       return stats;
     }
     why = "the flip budget was exhausted";

@@ -131,7 +131,10 @@ void test_time_steps(const char* name, CGAL::Random& rng)
     Scope step("a hull vertex pushed inside its hull edge (faces ccw, hull not convex)");
     DFP_CHECK(dent_the_hull(tr));
     DFP_CHECK(inverted_faces(tr) == 0);
-    make_and_check(tr, handles);
+    const DFP::Statistics s = make_and_check(tr, handles);
+    // Repaired in place: a flip of the infinite edge at the dented vertex, then Lawson.
+    DFP_CHECK_MSG(!s.fell_back, s.fallback_reason);
+    DFP_CHECK(s.flips > 0);
   }
   {
     Scope step("shear x += 0.1 y (orientation preserving)");

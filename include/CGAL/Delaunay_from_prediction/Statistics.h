@@ -55,6 +55,9 @@ struct Statistics
   std::size_t points_unused = 0;
   /// number of points equal to a point of smaller index (they share its vertex).
   std::size_t duplicate_points = 0;
+  /// `true` if the points were renumbered or the faces sorted into a spatial order before the
+  /// import (done for large inputs that come in no spatial order; it never changes the result).
+  bool input_reordered = false;
   /// why the prediction was not used as it is: empty when it was a triangulation of the
   /// points; otherwise a static string such as `"a face is degenerate"`.
   const char* fallback_reason = "";

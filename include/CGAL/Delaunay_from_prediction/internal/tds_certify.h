@@ -20,38 +20,27 @@ namespace CGAL {
 namespace Delaunay_from_prediction {
 namespace internal {
 
-// Returns null if `tr` (dimension 2) is a geometric triangulation of its vertices (every
-// finite face ccw, hull a convex polygon wound once: the argument of import_and_certify()
-// applies, the TDS providing the twin pairing), after listing in `non_delaunay` every interior
-// edge that fails the perturbed in-circle test. Otherwise returns why not. Reads only.
+// Returns null if every finite face of `tr` (dimension 2) is counterclockwise, after listing
+// in `non_delaunay` every interior edge that fails the perturbed in-circle test; otherwise
+// returns why not. `hull_is_convex` tells whether the hull is a convex polygon wound once:
+// then the argument of import_prediction.h (the TDS providing the twin pairing) shows that
+// `tr` is a geometric triangulation of its vertices; if not, convexify_hull() may make it one.
+// Reads only.
 template <class Triangulation>
 const char* certify_triangulation(
     const Triangulation& tr,
     std::vector<std::pair<typename Triangulation::Face_handle, int>>& non_delaunay,
-    std::size_t& edges_tested)
+    std::size_t& edges_tested, bool& hull_is_convex)
 {
   using Face_handle = typename Triangulation::Face_handle;
   using Point = typename Triangulation::Point;
+  hull_is_convex = false;
   if(tr.dimension() < 2)
     return "the triangulation has dimension below 2";
   const auto& gt = tr.geom_traits();
   auto orientation = gt.orientation_2_object();
   const auto infinite = tr.infinite_vertex();
   const std::less<const void*> before;
-  // The hull first (it is short, and a reflex hull vertex needs no face loop to show), in
-  // ccw order: the face outside hull edge u->v is (v, u, infinite).
-  std::vector<const Point*> hull;
-  const Face_handle start = infinite->face();
-  Face_handle outside = start;
-  do {
-    const int i = outside->index(infinite);
-    hull.push_back(&outside->vertex(cw(i))->point());
-    outside = outside->neighbor(cw(i));
-  } while(outside != start && hull.size() <= tr.number_of_vertices());
-  if(outside != start || !is_convex_ccw_cycle(gt, hull.size(), [&](std::size_t k) -> const Point& {
-       return *hull[k];
-     }))
-    return "the hull is not a convex polygon wound once";
   for(auto f = tr.finite_faces_begin(); f != tr.finite_faces_end(); ++f) {
     const Point& p0 = f->vertex(0)->point();
     const Point& p1 = f->vertex(1)->point();
@@ -68,6 +57,19 @@ const char* certify_triangulation(
         non_delaunay.emplace_back(f, i);
     }
   }
+  // The hull in ccw order: the face outside hull edge u->v is (v, u, infinite).
+  std::vector<const Point*> hull;
+  const Face_handle start = infinite->face();
+  Face_handle outside = start;
+  do {
+    const int i = outside->index(infinite);
+    hull.push_back(&outside->vertex(cw(i))->point());
+    outside = outside->neighbor(cw(i));
+  } while(outside != start && hull.size() <= tr.number_of_vertices());
+  hull_is_convex = outside == start &&
+                   is_convex_ccw_cycle(gt, hull.size(), [&](std::size_t k) -> const Point& {
+                     return *hull[k];
+                   });
   return nullptr;
 }
 

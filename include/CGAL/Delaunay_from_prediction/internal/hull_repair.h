@@ -1,0 +1,109 @@
+// Copyright (c) 2026 Delaunay_from_prediction contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Author(s): Delaunay_from_prediction founding team
+//
+// Repair of a hull that is no longer convex (make_delaunay after moves: a hull vertex that
+// moved inwards, or nearly collinear hull points that moved a little) by flips of infinite
+// edges. Each flip turns a reflex hull vertex b, between hull neighbours a and c, into an
+// interior vertex: the infinite faces around the edge (b, infinite) become the finite face
+// (a, c, b), counterclockwise because b turned right, and the infinite face of the new hull
+// edge a->c.
+
+#ifndef CGAL_DELAUNAY_FROM_PREDICTION_INTERNAL_HULL_REPAIR_H
+#define CGAL_DELAUNAY_FROM_PREDICTION_INTERNAL_HULL_REPAIR_H
+
+#include <CGAL/Delaunay_from_prediction/internal/predicates.h>
+
+#include <cstddef>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Delaunay_from_prediction {
+namespace internal {
+
+// Walks the hull of `tr` (dimension 2, every finite face ccw) and flips away reflex vertices
+// until the hull is convex. Why the result is a triangulation although the hull before may
+// not have been a simple polygon: every face is still ccw, so by the argument of
+// import_prediction.h the faces tile the plane with multiplicity equal to the winding number
+// of the hull; the final check that the hull is a convex polygon wound once makes that 1.
+// On success the new finite faces' edges are pushed on `stack` (they may not be locally
+// Delaunay), their addresses into `created`, and true is returned; otherwise every flip is
+// undone and false returned (the caller's triangulation is as it was).
+template <class Triangulation>
+bool convexify_hull(Triangulation& tr,
+                    std::vector<std::pair<typename Triangulation::Face_handle, int>>& stack,
+                    std::vector<const void*>& created, std::size_t& flips)
+{
+  using Face_handle = typename Triangulation::Face_handle;
+  using Vertex_handle = typename Triangulation::Vertex_handle;
+  using Point = typename Triangulation::Point;
+  auto& tds = tr.tds();
+  auto orientation = tr.geom_traits().orientation_2_object();
+  const Vertex_handle infinite = tr.infinite_vertex();
+
+  std::size_t hull_size = 0;
+  {
+    Face_handle f = infinite->face();
+    do {
+      ++hull_size;
+      f = f->neighbor(cw(f->index(infinite)));
+    } while(f != infinite->face());
+  }
+
+  // Infinite face f holds hull edge a->b with a = f->vertex(cw(i)), b = f->vertex(ccw(i)),
+  // i the index of the infinite vertex; f->neighbor(cw(i)) holds the next hull edge b->c and
+  // f->neighbor(ccw(i)) the previous one.
+  std::vector<std::pair<Face_handle, Vertex_handle>> done; // (finite face made, its b)
+  Face_handle f = infinite->face();
+  std::size_t unchanged = 0;
+  for(std::size_t steps = 0; unchanged < hull_size && steps < 4 * hull_size + 16; ++steps) {
+    const int i = f->index(infinite);
+    const Face_handle g = f->neighbor(cw(i));
+    const Vertex_handle a = f->vertex(cw(i)), b = f->vertex(ccw(i));
+    const Vertex_handle c = g->vertex(ccw(g->index(infinite)));
+    if(hull_size <= 3 || orientation(a->point(), b->point(), c->point()) != RIGHT_TURN ||
+       tds.is_edge(a, c)) {
+      f = g;
+      ++unchanged;
+      continue;
+    }
+    tds.flip(f, cw(i)); // the edge (b, infinite)
+    const Face_handle inside = f->has_vertex(infinite) ? g : f;
+    const Face_handle outside = inside == f ? g : f;
+    done.emplace_back(inside, b);
+    --hull_size;
+    unchanged = 0;
+    // Step back: a may have become reflex.
+    f = outside->neighbor(ccw(outside->index(infinite)));
+  }
+
+  std::vector<const Point*> hull;
+  Face_handle h = infinite->face();
+  do {
+    const int i = h->index(infinite);
+    hull.push_back(&h->vertex(cw(i))->point());
+    h = h->neighbor(cw(i));
+  } while(h != infinite->face() && hull.size() <= hull_size);
+  const bool convex = h == infinite->face() &&
+                      is_convex_ccw_cycle(tr.geom_traits(), hull.size(),
+                                          [&](std::size_t k) -> const Point& { return *hull[k]; });
+  if(!convex) {
+    for(auto it = done.rbegin(); it != done.rend(); ++it)
+      tds.flip(it->first, it->first->index(it->second)); // the edge (a, c) back to (b, infinite)
+    return false;
+  }
+  for(const auto& made : done) {
+    created.push_back(&*made.first);
+    for(int k = 0; k < 3; ++k)
+      stack.emplace_back(made.first, k);
+  }
+  flips += done.size();
+  return true;
+}
+
+} // namespace internal
+} // namespace Delaunay_from_prediction
+} // namespace CGAL
+
+#endif // CGAL_DELAUNAY_FROM_PREDICTION_INTERNAL_HULL_REPAIR_H
