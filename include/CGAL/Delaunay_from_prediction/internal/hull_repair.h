@@ -13,6 +13,7 @@
 #define CGAL_DELAUNAY_FROM_PREDICTION_INTERNAL_HULL_REPAIR_H
 
 #include <CGAL/Delaunay_from_prediction/internal/predicates.h>
+#include <CGAL/Delaunay_from_prediction/internal/tds_certify.h>
 
 #include <cstddef>
 #include <utility>
@@ -37,7 +38,6 @@ bool convexify_hull(Triangulation& tr,
 {
   using Face_handle = typename Triangulation::Face_handle;
   using Vertex_handle = typename Triangulation::Vertex_handle;
-  using Point = typename Triangulation::Point;
   auto& tds = tr.tds();
   auto orientation = tr.geom_traits().orientation_2_object();
   const Vertex_handle infinite = tr.infinite_vertex();
@@ -78,17 +78,7 @@ bool convexify_hull(Triangulation& tr,
     f = outside->neighbor(ccw(outside->index(infinite)));
   }
 
-  std::vector<const Point*> hull;
-  Face_handle h = infinite->face();
-  do {
-    const int i = h->index(infinite);
-    hull.push_back(&h->vertex(cw(i))->point());
-    h = h->neighbor(cw(i));
-  } while(h != infinite->face() && hull.size() <= hull_size);
-  const bool convex = h == infinite->face() &&
-                      is_convex_ccw_cycle(tr.geom_traits(), hull.size(),
-                                          [&](std::size_t k) -> const Point& { return *hull[k]; });
-  if(!convex) {
+  if(!hull_is_convex_and_wound_once(tr)) {
     for(auto it = done.rbegin(); it != done.rend(); ++it)
       tds.flip(it->first, it->first->index(it->second)); // the edge (a, c) back to (b, infinite)
     return false;

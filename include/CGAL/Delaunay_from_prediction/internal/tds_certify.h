@@ -20,6 +20,27 @@ namespace CGAL {
 namespace Delaunay_from_prediction {
 namespace internal {
 
+// Whether the hull of `tr` (dimension 2) is a convex polygon wound once counterclockwise.
+// The hull is read in ccw order: the face outside hull edge u->v is (v, u, infinite).
+template <class Triangulation>
+bool hull_is_convex_and_wound_once(const Triangulation& tr)
+{
+  using Face_handle = typename Triangulation::Face_handle;
+  using Point = typename Triangulation::Point;
+  const auto infinite = tr.infinite_vertex();
+  std::vector<const Point*> hull;
+  const Face_handle start = infinite->face();
+  Face_handle outside = start;
+  do {
+    const int i = outside->index(infinite);
+    hull.push_back(&outside->vertex(cw(i))->point());
+    outside = outside->neighbor(cw(i));
+  } while(outside != start && hull.size() <= tr.number_of_vertices());
+  return outside == start &&
+         is_convex_ccw_cycle(tr.geom_traits(), hull.size(),
+                             [&](std::size_t k) -> const Point& { return *hull[k]; });
+}
+
 // Returns null if every finite face of `tr` (dimension 2) is counterclockwise, after listing
 // in `non_delaunay` every interior edge that fails the perturbed in-circle test; otherwise
 // returns why not. `hull_is_convex` tells whether the hull is a convex polygon wound once:
@@ -57,19 +78,7 @@ const char* certify_triangulation(
         non_delaunay.emplace_back(f, i);
     }
   }
-  // The hull in ccw order: the face outside hull edge u->v is (v, u, infinite).
-  std::vector<const Point*> hull;
-  const Face_handle start = infinite->face();
-  Face_handle outside = start;
-  do {
-    const int i = outside->index(infinite);
-    hull.push_back(&outside->vertex(cw(i))->point());
-    outside = outside->neighbor(cw(i));
-  } while(outside != start && hull.size() <= tr.number_of_vertices());
-  hull_is_convex = outside == start &&
-                   is_convex_ccw_cycle(gt, hull.size(), [&](std::size_t k) -> const Point& {
-                     return *hull[k];
-                   });
+  hull_is_convex = hull_is_convex_and_wound_once(tr);
   return nullptr;
 }
 
