@@ -46,16 +46,24 @@ namespace internal {
 // Triangulation_2 of random points needs ~6n) is cheaper to rebuild.
 inline std::size_t default_max_flips(std::size_t n) { return n / 2 + 64; }
 
+// The addresses of the objects behind `handles`, sorted, without repeats.
+template <class Handle>
+std::vector<const void*> sorted_addresses(const std::vector<Handle>& handles)
+{
+  std::vector<const void*> addresses(handles.size());
+  for(std::size_t k = 0; k < handles.size(); ++k)
+    addresses[k] = &*handles[k];
+  std::sort(addresses.begin(), addresses.end());
+  addresses.erase(std::unique(addresses.begin(), addresses.end()), addresses.end());
+  return addresses;
+}
+
 // Number of distinct faces in `faces`, not counting those whose address is in `except`.
 template <class Face_handle>
 std::size_t count_distinct(const std::vector<Face_handle>& faces,
                            std::vector<const void*> except = std::vector<const void*>())
 {
-  std::vector<const void*> addresses(faces.size());
-  for(std::size_t k = 0; k < faces.size(); ++k)
-    addresses[k] = &*faces[k];
-  std::sort(addresses.begin(), addresses.end());
-  addresses.erase(std::unique(addresses.begin(), addresses.end()), addresses.end());
+  const std::vector<const void*> addresses = sorted_addresses(faces);
   std::sort(except.begin(), except.end());
   std::size_t count = 0;
   for(const void* a : addresses)
@@ -177,11 +185,9 @@ Statistics delaunay_from_prediction(const PointRange& points, const FaceRange& f
   } else {
     // A predicted face survives the insertions if it was never flipped and has no new
     // vertex (insertion recycles the faces it destroys for faces around the new vertex).
-    std::vector<const void*> modified, new_vertices;
-    for(const Face_handle f : touched)
-      modified.push_back(&*f);
+    const std::vector<const void*> modified = internal::sorted_addresses(touched);
+    std::vector<const void*> new_vertices;
     internal::insert_points(result, point_at, unused, stats, &new_vertices);
-    std::sort(modified.begin(), modified.end());
     std::sort(new_vertices.begin(), new_vertices.end());
     auto is_new = [&](const Vertex_handle v) {
       return std::binary_search(new_vertices.begin(), new_vertices.end(), static_cast<const void*>(&*v));
