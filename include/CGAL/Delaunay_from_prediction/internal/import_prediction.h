@@ -22,6 +22,7 @@
 
 #include <CGAL/Delaunay_from_prediction/internal/input_check.h>
 #include <CGAL/Delaunay_from_prediction/internal/predicates.h>
+#include <CGAL/Delaunay_from_prediction/internal/random.h>
 #include <CGAL/Delaunay_from_prediction/internal/spatial_order.h>
 #include <CGAL/Delaunay_from_prediction/internal/vertex_info.h>
 
@@ -38,19 +39,6 @@
 namespace CGAL {
 namespace Delaunay_from_prediction {
 namespace internal {
-
-// Small deterministic generator (splitmix64) for the sampling screen.
-struct Splitmix64
-{
-  std::uint64_t state;
-  std::uint64_t operator()()
-  {
-    std::uint64_t z = (state += 0x9E3779B97F4A7C15ull);
-    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-    return z ^ (z >> 31);
-  }
-};
 
 template <class Range>
 constexpr bool has_random_access()

@@ -20,6 +20,17 @@ namespace CGAL {
 namespace Delaunay_from_prediction {
 namespace internal {
 
+// The edge (b, c) between the ccw triangle (a, b, c) and the triangle on its other side, whose
+// third vertex is d, can be flipped to (a, d) keeping both faces counterclockwise: the
+// quadrilateral a, b, d, c is strictly convex.
+template <class Gt, class Point>
+bool flip_makes_ccw_faces(const Gt& gt, const Point& a, const Point& b, const Point& c,
+                          const Point& d)
+{
+  auto orientation = gt.orientation_2_object();
+  return orientation(a, b, d) == LEFT_TURN && orientation(a, d, c) == LEFT_TURN;
+}
+
 // Flips until every edge is locally Delaunay, or until `max_flips` flips have been made
 // (returns false then; the triangulation is still a valid triangulation of the same
 // vertices). `stack` holds candidate edges (face, index); any edge may be listed, stale or
@@ -38,7 +49,6 @@ bool lawson_flip(Triangulation& tr,
 {
   using Face_handle = typename Triangulation::Face_handle;
   const auto& gt = tr.geom_traits();
-  auto orientation = gt.orientation_2_object();
   const auto infinite = tr.infinite_vertex();
   auto& tds = tr.tds();
   while(!stack.empty()) {
@@ -55,7 +65,7 @@ bool lawson_flip(Triangulation& tr,
     const auto& d = g->vertex(j)->point();
     if(is_locally_delaunay(gt, a, b, c, d))
       continue;
-    if(orientation(a, b, d) != LEFT_TURN || orientation(a, d, c) != LEFT_TURN)
+    if(!flip_makes_ccw_faces(gt, a, b, c, d))
       continue; // only reachable with an inexact kernel
     if(flips >= max_flips)
       return false;

@@ -1,0 +1,484 @@
+// Copyright (c) 2026 Delaunay_from_prediction contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Author(s): Delaunay_from_prediction founding team
+//
+// The closeness measures of Table 1 of "Delaunay Triangulations with Predictions" between a
+// predicted triangulation G and DT(P), computed exactly:
+//   D, D_local                      one pass over G's edges, O(n) after DT(P);
+//   D_cross, d_cross                a straight walk in DT(P) along each wrong edge of G,
+//                                   O(n + D_cross) plus one circulation per walked edge;
+//   D_vio, d_vio                    a search in DT(P) from a vertex of each wrong triangle of G
+//                                   that never leaves its circumcircle, O(n + D_vio);
+//   D_flip                          bounded by D <= D_flip <= (flips of Lawson's algorithm).
+// Everything uses the package's perturbed in-circle test, so every measure is 0 exactly when
+// G is the triangulation CGAL's Delaunay_triangulation_2 builds.
+
+#ifndef CGAL_DELAUNAY_FROM_PREDICTION_MEASURES_H
+#define CGAL_DELAUNAY_FROM_PREDICTION_MEASURES_H
+
+#include <CGAL/Delaunay_from_prediction_2.h>
+#include <CGAL/Delaunay_from_prediction/internal/input_check.h>
+#include <CGAL/Delaunay_from_prediction/internal/predicates.h>
+
+#include <CGAL/Delaunay_triangulation_2.h>
+#include <CGAL/Kernel_traits.h>
+#include <CGAL/Triangulation_data_structure_2.h>
+#include <CGAL/Triangulation_face_base_2.h>
+#include <CGAL/Triangulation_vertex_base_with_info_2.h>
+
+#include <algorithm>
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <iterator>
+#include <limits>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Delaunay_from_prediction {
+
+/*!
+\ingroup PkgDelaunayFromPredictionRef
+The closeness measures of Table 1 of the paper between a prediction \f$G\f$ (index triples) and
+\f$DT(P)\f$, as computed by `prediction_measures()`.
+
+Edges are counted once however many faces list them; points at the same position count as one
+point (the one of smallest index). Every measure is defined for any list of triples, by the
+paper's definitions read literally; the relations between them
+(\f$D_{local} \le D \le D_{flip} \le D_{cross}\f$, \f$D\f$ = `D_missing`) are guaranteed only
+when `is_triangulation` is `true`.
+*/
+struct Prediction_measures
+{
+  /// number of points.
+  std::size_t points = 0;
+  /// number of faces of the prediction, as given.
+  std::size_t faces = 0;
+  /// number of distinct edges of the prediction (an edge between two points at the same
+  /// position is not counted).
+  std::size_t edges = 0;
+  /// number of edges of \f$DT(P)\f$.
+  std::size_t delaunay_edges = 0;
+
+  /// `true` if the faces form a triangulation of the points: all points distinct and used, no
+  /// degenerate, inverted (against the others), repeated or crossing face, and a union that is
+  /// the convex hull.
+  bool is_triangulation = false;
+  /// why `is_triangulation` is `false` (empty when it is `true`).
+  std::string not_a_triangulation;
+
+  /// \f$D\f$: number of edges of \f$G\f$ that are not edges of \f$DT(P)\f$.
+  std::size_t D = 0;
+  /// number of edges of \f$DT(P)\f$ that are not edges of \f$G\f$ (equal to \f$D\f$ for a
+  /// triangulation).
+  std::size_t D_missing = 0;
+  /// \f$D_{local}\f$: number of edges of \f$G\f$ with exactly two faces whose fourth point lies
+  /// strictly inside the (perturbed) circumcircle of the other face.
+  std::size_t D_local = 0;
+  /// \f$D_{cross}\f$: number of pairs (edge of \f$G\f$, edge of \f$DT(P)\f$) whose relative
+  /// interiors cross in a single point.
+  std::size_t D_cross = 0;
+  /// \f$d_{cross}\f$: the largest number of edges of \f$DT(P)\f$ crossed by one edge of \f$G\f$.
+  std::size_t d_cross = 0;
+  /// \f$D_{vio}\f$: number of pairs (point, face of \f$G\f$) with the point strictly inside the
+  /// (perturbed) circumcircle of the face. (Table 1 of the paper says "triangle in
+  /// \f$DT(P)\f$" here, which would make it always 0: faces of \f$G\f$ are meant.)
+  std::size_t D_vio = 0;
+  /// \f$d_{vio}\f$: the largest number of points strictly inside the (perturbed) circumcircle
+  /// of one face of \f$G\f$.
+  std::size_t d_vio = 0;
+  /// lower bound on the flip distance \f$D_{flip}\f$ (computing it is NP-hard for point sets):
+  /// \f$D\f$, since a flip replaces one edge. Meaningful when `is_triangulation`.
+  std::size_t D_flip_lower = 0;
+  /// upper bound on \f$D_{flip}\f$: the number of flips Lawson's algorithm makes from \f$G\f$
+  /// to \f$DT(P)\f$. Empty when \f$G\f$ is not a triangulation or the flip budget ran out.
+  std::optional<std::size_t> D_flip_upper;
+
+  /// number of distinct faces whose three points are collinear or not distinct; they have no
+  /// circumcircle and are left out of \f$D_{vio}\f$, \f$d_{vio}\f$ and \f$D_{local}\f$.
+  std::size_t degenerate_faces = 0;
+  /// number of edges of \f$G\f$ listed by more than two faces (left out of \f$D_{local}\f$).
+  std::size_t edges_with_more_than_two_faces = 0;
+};
+
+namespace internal {
+
+// DT(P) with each vertex's info the smallest index of its point.
+template <class K>
+using Indexed_delaunay_2 = CGAL::Delaunay_triangulation_2<
+    K, CGAL::Triangulation_data_structure_2<CGAL::Triangulation_vertex_base_with_info_2<std::size_t, K>,
+                                            CGAL::Triangulation_face_base_2<K>>>;
+
+inline std::uint64_t edge_key(std::size_t a, std::size_t b)
+{
+  if(a > b)
+    std::swap(a, b);
+  return (std::uint64_t(a) << 32) | std::uint64_t(b);
+}
+
+// Counts the edges of `dt` whose relative interior the segment from u to w crosses in a single
+// point, u and w being vertices of `dt` that are not neighbours. The walk goes face by face
+// along the segment; where the segment passes through a vertex it starts again from that
+// vertex (edges at that vertex touch the segment, they do not cross it). With exact
+// predicates the count is exact; with an inexact kernel a step limit keeps it finite.
+template <class DT>
+std::size_t count_crossings(const DT& dt, typename DT::Vertex_handle u, typename DT::Vertex_handle w)
+{
+  using Vertex_handle = typename DT::Vertex_handle;
+  using Face_handle = typename DT::Face_handle;
+  const auto& gt = dt.geom_traits();
+  auto orientation = gt.orientation_2_object();
+  auto strictly_between = gt.collinear_are_strictly_ordered_along_line_2_object();
+  const auto& target = w->point();
+  std::size_t crossings = 0;
+  std::size_t steps_left = 2 * dt.number_of_faces() + dt.number_of_vertices() + 8;
+  Vertex_handle s = u;
+  while(steps_left-- > 0) {
+    // The face at s that the segment enters, or the neighbour of s the segment runs through.
+    Face_handle first;
+    Vertex_handle through;
+    auto fc = dt.incident_faces(s), done = fc;
+    do {
+      if(dt.is_infinite(fc))
+        continue;
+      const int i = fc->index(s);
+      const Vertex_handle a = fc->vertex(ccw(i)), b = fc->vertex(cw(i));
+      if(a == w || b == w)
+        return crossings;
+      const Orientation oa = orientation(s->point(), a->point(), target);
+      if(oa == COLLINEAR && strictly_between(s->point(), a->point(), target)) {
+        through = a;
+        break;
+      }
+      if(oa == LEFT_TURN && orientation(s->point(), b->point(), target) == RIGHT_TURN) {
+        first = fc;
+        break;
+      }
+    } while(++fc != done);
+    if(through != Vertex_handle()) {
+      s = through;
+      continue;
+    }
+    if(first == Face_handle())
+      return crossings; // only with an inexact kernel
+    // The segment crosses the edge (right, left) of `f` opposite to `behind`.
+    Face_handle f = first;
+    Vertex_handle behind = s;
+    Vertex_handle right = f->vertex(ccw(f->index(s))), left = f->vertex(cw(f->index(s)));
+    ++crossings;
+    bool restarted = false;
+    while(steps_left-- > 0) {
+      const int k = f->index(behind);
+      const Face_handle g = f->neighbor(k);
+      if(dt.is_infinite(g))
+        return crossings; // only with an inexact kernel
+      const Vertex_handle c = g->vertex(dt.tds().mirror_index(f, k));
+      if(c == w)
+        return crossings;
+      const Orientation oc = orientation(s->point(), target, c->point());
+      if(oc == COLLINEAR) {
+        s = c;
+        restarted = true;
+        break;
+      }
+      if(oc == LEFT_TURN) {
+        behind = left;
+        left = c;
+      } else {
+        behind = right;
+        right = c;
+      }
+      f = g;
+      ++crossings;
+    }
+    if(!restarted)
+      break;
+  }
+  return crossings;
+}
+
+// Number of vertices of `dt` strictly inside the perturbed circumcircle of the ccw triangle
+// (a, b, c) of vertices of `dt`. Why a search from a, b, c that never leaves the circle finds
+// them all: lift the (perturbed) points to the paraboloid; the points inside the circle are
+// the lifted points below the plane h through the lifts of a, b, c, and DT's edges are the
+// edges of the lower hull. A linear function on a polyhedron has a strictly decreasing edge
+// at every vertex that is not a minimizer, so every vertex below h has a descending path to
+// the lowest vertex that stays below h, and a (on h, not lowest when some point is below h)
+// has a neighbour below h. So the vertices below h and a form one connected subgraph of DT.
+// `mark` has one entry per vertex info; `stamp` is new for each call.
+template <class DT>
+std::size_t count_points_in_circle(const DT& dt, typename DT::Vertex_handle a,
+                                   typename DT::Vertex_handle b, typename DT::Vertex_handle c,
+                                   std::vector<std::uint32_t>& mark, std::uint32_t stamp,
+                                   std::vector<typename DT::Vertex_handle>& queue)
+{
+  const auto& gt = dt.geom_traits();
+  std::size_t inside = 0;
+  queue.clear();
+  for(const auto& v : {a, b, c}) {
+    mark[v->info()] = stamp;
+    queue.push_back(v);
+  }
+  for(std::size_t head = 0; head < queue.size(); ++head) {
+    auto vc = dt.incident_vertices(queue[head]), done = vc;
+    do {
+      if(dt.is_infinite(vc) || mark[vc->info()] == stamp)
+        continue;
+      mark[vc->info()] = stamp;
+      if(side_of_oriented_circle_perturbed(gt, a->point(), b->point(), c->point(), vc->point()) ==
+         ON_POSITIVE_SIDE) {
+        ++inside;
+        queue.push_back(vc);
+      }
+    } while(++vc != done);
+  }
+  return inside;
+}
+
+} // namespace internal
+
+/*!
+\ingroup PkgDelaunayFromPredictionRef
+computes the closeness measures of Table 1 of the paper between the prediction `faces` and the
+Delaunay triangulation of `points`, exactly (for a kernel with exact predicates).
+
+All tests use CGAL's symbolic perturbation for co-circular points, so every measure is 0
+exactly when `faces` is the triangulation `CGAL::Delaunay_triangulation_2` builds. The prediction
+need not be a triangulation: the measures are then computed by their definitions read literally
+(see `Prediction_measures`), and `is_triangulation` says why it is not one.
+
+Cost: \f$DT(P)\f$ is computed with `delaunay_from_prediction()` from the prediction itself
+(which also gives the Lawson flip count), then \f$O(n + D_{cross} + D_{vio})\f$ more, plus one
+turn around an endpoint (the one of smaller degree in \f$DT(P)\f$) of each wrong edge, and one
+around a vertex of each wrong face.
+
+\tparam PointRange a random-access range of points of a CGAL kernel.
+\tparam FaceRange a range of index triples, as for `delaunay_from_prediction()`.
+\tparam NamedParameters a sequence of named parameters.
+
+\param points the points.
+\param faces the prediction.
+\param np optional named parameters among the ones listed below.
+
+\cgalNamedParamsBegin
+  \cgalParamNBegin{max_flips}
+    \cgalParamDescription{the most flips Lawson's algorithm may make for `D_flip_upper`; past it
+      `D_flip_upper` is left empty. Lawson's algorithm makes at most \f$D_{cross}\f$ flips
+      (Hanke, Ottmann and Schuierer), so the default costs no more than the crossing count.}
+    \cgalParamType{`std::size_t`}
+    \cgalParamDefault{no limit}
+  \cgalParamNEnd
+\cgalNamedParamsEnd
+
+\returns the measures.
+\throws Invalid_prediction for malformed input, as `delaunay_from_prediction()` does.
+*/
+template <class PointRange, class FaceRange,
+          class NamedParameters = parameters::Default_named_parameters>
+Prediction_measures prediction_measures(const PointRange& points, const FaceRange& faces,
+                                        const NamedParameters& np = parameters::default_values())
+{
+  using parameters::choose_parameter;
+  using parameters::get_parameter;
+  using Point = typename std::iterator_traits<decltype(std::begin(points))>::value_type;
+  using K = typename CGAL::Kernel_traits<Point>::Kernel;
+  using DT = internal::Indexed_delaunay_2<K>;
+  using Vertex_handle = typename DT::Vertex_handle;
+
+  Prediction_measures m;
+  const auto point_at = std::begin(points);
+  const std::size_t n = std::size_t(std::distance(std::begin(points), std::end(points)));
+  m.points = n;
+  if(n >= (std::size_t(1) << 32))
+    throw Invalid_prediction("Delaunay_from_prediction: prediction_measures takes fewer than 2^32 points");
+  const std::size_t max_flips =
+      choose_parameter(get_parameter(np, internal_np::max_flips), std::numeric_limits<std::size_t>::max());
+
+  // DT(P), and Lawson's flip count from G when G is a triangulation.
+  DT dt;
+  const Statistics stats = delaunay_from_prediction(
+      points, faces, dt, parameters::max_flips(max_flips, parameters::screen_prediction(false)));
+  m.faces = stats.faces_in;
+
+  // Each index's vertex; equal points share the vertex of the smallest index.
+  std::vector<Vertex_handle> vertex_of(n);
+  for(auto v = dt.finite_vertices_begin(); v != dt.finite_vertices_end(); ++v)
+    vertex_of[v->info()] = v;
+  std::size_t duplicates = 0;
+  for(std::size_t i = 0; i < n; ++i) {
+    if(vertex_of[i] != Vertex_handle())
+      continue;
+    typename DT::Locate_type lt;
+    int li;
+    const auto f = dt.locate(point_at[i], lt, li);
+    CGAL_assertion(lt == DT::VERTEX);
+    vertex_of[i] = f->vertex(li);
+    ++duplicates;
+  }
+  auto canonical = [&](std::size_t i) { return std::size_t(vertex_of[i]->info()); };
+
+  // DT's edges and faces, as sorted keys of canonical indices.
+  std::vector<std::uint64_t> dt_edges;
+  std::vector<std::size_t> degree(n, 0);
+  dt_edges.reserve(3 * n);
+  for(auto e = dt.finite_edges_begin(); e != dt.finite_edges_end(); ++e) {
+    const std::size_t a = e->first->vertex(internal::ccw(e->second))->info();
+    const std::size_t b = e->first->vertex(internal::cw(e->second))->info();
+    dt_edges.push_back(internal::edge_key(a, b));
+    ++degree[a];
+    ++degree[b];
+  }
+  std::sort(dt_edges.begin(), dt_edges.end());
+  m.delaunay_edges = dt_edges.size();
+  auto is_dt_edge = [&](std::uint64_t key) {
+    return std::binary_search(dt_edges.begin(), dt_edges.end(), key);
+  };
+  using Triple = std::array<std::size_t, 3>;
+  std::vector<Triple> dt_faces;
+  if(dt.dimension() == 2)
+    for(auto f = dt.finite_faces_begin(); f != dt.finite_faces_end(); ++f) {
+      Triple t{f->vertex(0)->info(), f->vertex(1)->info(), f->vertex(2)->info()};
+      std::sort(t.begin(), t.end());
+      dt_faces.push_back(t);
+    }
+  std::sort(dt_faces.begin(), dt_faces.end());
+
+  // G's faces in canonical indices, ccw; degenerate ones flagged. Half-edges carry their face.
+  const auto& gt = dt.geom_traits();
+  auto orientation = gt.orientation_2_object();
+  struct Half_edge { std::uint64_t key; std::uint32_t face; std::uint8_t slot; };
+  std::vector<Triple> g_faces;
+  std::vector<char> degenerate;
+  std::vector<Half_edge> half_edges;
+  std::vector<char> used(n, 0);
+  g_faces.reserve(m.faces);
+  half_edges.reserve(3 * m.faces);
+  {
+    std::size_t k = 0, idx[3];
+    for(const auto& face : faces) {
+      internal::read_face(face, k++, n, idx); // cannot throw: delaunay_from_prediction checked
+      used[idx[0]] = used[idx[1]] = used[idx[2]] = 1;
+      Triple t{canonical(idx[0]), canonical(idx[1]), canonical(idx[2])};
+      bool flat = t[0] == t[1] || t[1] == t[2] || t[0] == t[2];
+      if(!flat) {
+        const Orientation o = orientation(point_at[t[0]], point_at[t[1]], point_at[t[2]]);
+        flat = o == COLLINEAR;
+        if(o == RIGHT_TURN)
+          std::swap(t[1], t[2]);
+      }
+      const std::uint32_t id = std::uint32_t(g_faces.size());
+      for(std::uint8_t j = 0; j < 3; ++j) {
+        const std::size_t a = t[internal::ccw(j)], b = t[internal::cw(j)];
+        if(a != b)
+          half_edges.push_back({internal::edge_key(a, b), id, j});
+      }
+      g_faces.push_back(t);
+      degenerate.push_back(flat ? 1 : 0);
+    }
+  }
+
+  // D, D_missing, D_local, D_cross, d_cross: one group of half-edges per edge of G.
+  std::sort(half_edges.begin(), half_edges.end(),
+            [](const Half_edge& x, const Half_edge& y) { return x.key < y.key; });
+  std::size_t common = 0;
+  const bool planar = dt.dimension() == 2;
+  for(std::size_t h = 0; h < half_edges.size();) {
+    std::size_t end = h + 1;
+    while(end < half_edges.size() && half_edges[end].key == half_edges[h].key)
+      ++end;
+    const std::uint64_t key = half_edges[h].key;
+    ++m.edges;
+    const std::size_t a = std::size_t(key >> 32), b = std::size_t(key & 0xffffffffu);
+    if(is_dt_edge(key)) {
+      ++common;
+    } else {
+      ++m.D;
+      if(planar) {
+        // Start from the endpoint of smaller degree: the walk begins with a turn around it.
+        const bool from_a = degree[a] <= degree[b];
+        const std::size_t crossings =
+            internal::count_crossings(dt, vertex_of[from_a ? a : b], vertex_of[from_a ? b : a]);
+        m.D_cross += crossings;
+        m.d_cross = (std::max)(m.d_cross, crossings);
+      }
+    }
+    if(end - h > 2) {
+      ++m.edges_with_more_than_two_faces;
+    } else if(end - h == 2) {
+      const Triple& f = g_faces[half_edges[h].face];
+      const Triple& g = g_faces[half_edges[h + 1].face];
+      const std::size_t d = g[half_edges[h + 1].slot];
+      if(!degenerate[half_edges[h].face] && !degenerate[half_edges[h + 1].face] &&
+         d != f[half_edges[h].slot] &&
+         !internal::is_locally_delaunay(gt, point_at[f[0]], point_at[f[1]], point_at[f[2]], point_at[d]))
+        ++m.D_local;
+    }
+    h = end;
+  }
+  m.D_missing = m.delaunay_edges - common;
+  m.D_flip_lower = m.D;
+
+  // D_vio, d_vio over the distinct faces of G; a face of DT(P) has no point inside.
+  std::vector<std::uint32_t> order(g_faces.size());
+  for(std::uint32_t k = 0; k < order.size(); ++k)
+    order[k] = k;
+  auto sorted_triple = [&](std::uint32_t k) {
+    Triple t = g_faces[k];
+    std::sort(t.begin(), t.end());
+    return t;
+  };
+  std::sort(order.begin(), order.end(),
+            [&](std::uint32_t x, std::uint32_t y) { return sorted_triple(x) < sorted_triple(y); });
+  std::vector<std::uint32_t> mark(n, 0);
+  std::vector<Vertex_handle> queue;
+  std::uint32_t stamp = 0;
+  bool repeated_face = false;
+  for(std::size_t k = 0; k < order.size(); ++k) {
+    const Triple key = sorted_triple(order[k]);
+    if(k > 0 && key == sorted_triple(order[k - 1])) {
+      repeated_face = true;
+      continue;
+    }
+    if(degenerate[order[k]]) {
+      ++m.degenerate_faces;
+      continue;
+    }
+    if(!planar || std::binary_search(dt_faces.begin(), dt_faces.end(), key))
+      continue;
+    if(++stamp == 0) { // wrapped around: clear the marks
+      std::fill(mark.begin(), mark.end(), 0);
+      stamp = 1;
+    }
+    const Triple& t = g_faces[order[k]];
+    const std::size_t inside = internal::count_points_in_circle(
+        dt, vertex_of[t[0]], vertex_of[t[1]], vertex_of[t[2]], mark, stamp, queue);
+    m.D_vio += inside;
+    m.d_vio = (std::max)(m.d_vio, inside);
+  }
+
+  // Is G a triangulation of P? The import certified it (orientation, twins, convex hull wound
+  // once) unless it failed; what it tolerates (unused points) is checked here.
+  const bool out_of_budget = stats.fell_back && std::string(stats.fallback_reason) == "the flip budget was exhausted";
+  if(n < 3 || m.faces == 0)
+    m.not_a_triangulation = "fewer than three points or no face";
+  else if(duplicates > 0)
+    m.not_a_triangulation = "two points are at the same position";
+  else if(stats.fell_back && !out_of_budget)
+    m.not_a_triangulation = stats.fallback_reason;
+  else if(std::count(used.begin(), used.end(), char(0)) > 0)
+    m.not_a_triangulation = "some points are used by no face";
+  else if(repeated_face)
+    m.not_a_triangulation = "a face is listed twice";
+  m.is_triangulation = m.not_a_triangulation.empty();
+  if(m.is_triangulation && !out_of_budget)
+    m.D_flip_upper = stats.flips;
+  return m;
+}
+
+} // namespace Delaunay_from_prediction
+} // namespace CGAL
+
+#endif // CGAL_DELAUNAY_FROM_PREDICTION_MEASURES_H
