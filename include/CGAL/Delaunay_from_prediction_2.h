@@ -46,6 +46,10 @@ namespace internal {
 // Triangulation_2 of random points needs ~6n) is cheaper to rebuild.
 inline std::size_t default_max_flips(std::size_t n) { return n / 2 + 64; }
 
+// Statistics::fallback_reason when Lawson's algorithm would need, or needed, more flips than
+// the budget.
+constexpr const char* flip_budget_exhausted = "the flip budget was exhausted";
+
 // The addresses of the objects behind `handles`, sorted, without repeats.
 template <class Handle>
 std::vector<const void*> sorted_addresses(const std::vector<Handle>& handles)
@@ -172,10 +176,14 @@ Statistics delaunay_from_prediction(const PointRange& points, const FaceRange& f
   stats.edges_tested = imported.edges_tested;
   stats.edges_not_locally_delaunay = imported.not_locally_delaunay.size();
 
-  // Repair.
+  // Repair. Each failing edge is not Delaunay and a flip removes one edge, so Lawson's
+  // algorithm needs at least as many flips as there are failing edges: past the budget, the
+  // flips would be wasted.
+  if(imported.not_locally_delaunay.size() > max_flips)
+    return build_from_scratch(internal::flip_budget_exhausted);
   std::vector<Face_handle> touched;
   if(!internal::lawson_flip(result, imported.not_locally_delaunay, max_flips, stats.flips, touched))
-    return build_from_scratch("the flip budget was exhausted");
+    return build_from_scratch(internal::flip_budget_exhausted);
 
   // Points no face uses: duplicates of vertices, or points to insert.
   std::vector<std::size_t>& unused = imported.unused_points;
@@ -256,13 +264,15 @@ Statistics make_delaunay(Triangulation& tr, const NamedParameters& np = paramete
   if(why == nullptr && !hull_is_convex &&
      !internal::convexify_hull(tr, stack, hull_faces, stats.flips))
     why = "the hull is not a convex polygon wound once, and no flip of hull edges makes it one";
+  if(why == nullptr && hull_is_convex && stats.edges_not_locally_delaunay > max_flips)
+    why = internal::flip_budget_exhausted; // at least one flip per failing edge: see above
   if(why == nullptr) {
     std::vector<Face_handle> touched;
     if(internal::lawson_flip(tr, stack, max_flips, stats.flips, touched)) {
       stats.faces_certified = stats.faces_in - internal::count_distinct(touched, hull_faces);
       return stats;
     }
-    why = "the flip budget was exhausted";
+    why = internal::flip_budget_exhausted;
   }
   stats.fell_back = true;
   stats.fallback_reason = why;

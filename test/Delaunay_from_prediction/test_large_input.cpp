@@ -2,7 +2,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Author(s): Delaunay_from_prediction contributors
 //
-// Inputs large enough (n >= 2^16) for the import to reorder them spatially (renumbered points,
+// Inputs large enough (n >= 2^16; reordering starts at 2^12) for the import to reorder them spatially (renumbered points,
 // sorted faces) and for its frontier of open half-edges to wrap around: the result must still
 // be CGAL's DT, with each vertex's info the smallest index of its point, whatever the order
 // of the points and faces, and whether the reordering ran or was skipped.

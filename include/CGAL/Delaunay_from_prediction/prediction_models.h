@@ -88,6 +88,8 @@ public:
   // flip can change).
   bool draw(Splitmix64& random, Face_handle& f, int& i) const
   {
+    if(faces_.empty())
+      return false; // no triangle: nothing to flip
     const std::size_t r = random.below(3 * faces_.size() + hull_edges_);
     if(r >= 3 * faces_.size())
       return false;
@@ -253,11 +255,17 @@ rho_model_prediction(const PointRange& points, double rho, std::uint64_t seed,
   using DT = decltype(dt);
   using Face_handle = typename DT::Face_handle;
   internal::Splitmix64 random{seed};
+  // One draw per edge in the order of the edges' index pairs: CGAL's edge iterator visits
+  // an edge from whichever of its faces has the smaller address, which varies between runs.
   std::vector<std::uint64_t> kept;
   for(auto e = dt.finite_edges_begin(); e != dt.finite_edges_end(); ++e)
-    if(random.uniform() < rho)
-      kept.push_back(internal::edge_key_of<DT>(e->first, e->second));
+    kept.push_back(internal::edge_key_of<DT>(e->first, e->second));
   std::sort(kept.begin(), kept.end());
+  std::size_t kept_count = 0;
+  for(const std::uint64_t key : kept)
+    if(random.uniform() < rho)
+      kept[kept_count++] = key;
+  kept.resize(kept_count);
   if(kept_edges != nullptr) {
     kept_edges->clear();
     for(const std::uint64_t key : kept)
