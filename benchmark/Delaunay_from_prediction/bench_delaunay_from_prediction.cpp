@@ -30,27 +30,19 @@
 //          [--cases shuffled,hilbert,flips,move,random,memory] [--dist uniform,clustered]
 //          [--csv FILE] [--malloc keep|default] [--seed S]
 
-#include <CGAL/Delaunay_from_prediction_2.h>
+#include "benchmark_util.h"
 
-#include <CGAL/Delaunay_triangulation_2.h>
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/Real_timer.h>
-#include <CGAL/Triangulation_vertex_base_with_info_2.h>
 #include <CGAL/hilbert_sort.h>
-#include <CGAL/version.h>
 
 #include <malloc.h>
 #include <sched.h>
 #include <unistd.h>
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
-#include <cstring>
-#include <ctime>
 #include <fstream>
 #include <iomanip>
 #include <iostream>
@@ -146,101 +138,38 @@ void operator delete[](void* p, std::size_t, std::align_val_t) noexcept { counti
 
 namespace {
 
-namespace DFP = CGAL::Delaunay_from_prediction;
+using namespace dfp_bench;
 
-using K = CGAL::Exact_predicates_inexact_constructions_kernel;
-using Point = K::Point_2;
-using DT = CGAL::Delaunay_triangulation_2<K>; // timed, for CGAL and for us
-// Set-up only (exporting faces as point indices): the same triangulation, with the index in info.
-using Info_vb = CGAL::Triangulation_vertex_base_with_info_2<std::uint32_t, K>;
-using Info_tds = CGAL::Triangulation_data_structure_2<Info_vb>;
-using DTI = CGAL::Delaunay_triangulation_2<K, Info_tds>;
-using Face = std::array<std::uint32_t, 3>;
-
-// ---------------------------------------------------------------------------------------------
-// Random numbers: our own generator and distributions, so the inputs are the same with any
-// standard library.
-struct Rng
-{
-  std::uint64_t state;
-  explicit Rng(std::uint64_t seed) : state(seed) {}
-  std::uint64_t next()
-  {
-    std::uint64_t z = (state += 0x9e3779b97f4a7c15ull);
-    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
-    z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
-    return z ^ (z >> 31);
-  }
-  double uniform() { return double(next() >> 11) * 0x1.0p-53; } // [0, 1)
-  std::size_t below(std::size_t m)                               // [0, m), unbiased
-  {
-    const std::uint64_t limit = std::numeric_limits<std::uint64_t>::max() -
-                                std::numeric_limits<std::uint64_t>::max() % m;
-    std::uint64_t r;
-    do r = next(); while(r >= limit);
-    return std::size_t(r % m);
-  }
-  double normal() // Box-Muller
-  {
-    double u = uniform();
-    while(u <= 0.)
-      u = uniform();
-    return std::sqrt(-2. * std::log(u)) * std::cos(2. * M_PI * uniform());
-  }
-};
-
-std::uint64_t mix(std::uint64_t x)
-{
-  x = (x ^ (x >> 33)) * 0xff51afd7ed558ccdull;
-  x = (x ^ (x >> 33)) * 0xc4ceb9fe1a85ec53ull;
-  return x ^ (x >> 33);
-}
-std::uint64_t bits(double d)
-{
-  std::uint64_t b;
-  std::memcpy(&b, &d, sizeof b);
-  return b;
-}
+// The seed of one input of this program. Its own salt, as before benchmark_util.h: the uniform
+// inputs are still those of the recorded tables (the clustered ones changed when this program
+// took the package's generator, whose normal draws differ from its former own).
 std::uint64_t seed_for(std::uint64_t base, const std::string& what, std::size_t n)
 {
-  std::uint64_t h = mix(base ^ 0x1234567ull) ^ mix(n + 17);
-  for(char c : what)
-    h = mix(h ^ std::uint64_t(static_cast<unsigned char>(c)));
-  return h;
-}
-
-template <class T>
-void shuffle(std::vector<T>& v, Rng& rng)
-{
-  for(std::size_t i = v.size(); i > 1; --i)
-    std::swap(v[i - 1], v[rng.below(i)]);
+  return salted_seed(0x1234567ull, base, what, n);
 }
 
 // ---------------------------------------------------------------------------------------------
 // Inputs.
 std::vector<Point> make_points(const std::string& dist, std::size_t n, std::uint64_t seed)
 {
-  Rng rng(seed_for(seed, "points/" + dist, n));
+  const std::uint64_t points_seed = seed_for(seed, "points/" + dist, n);
+  if(dist == "uniform")
+    return uniform_points(n, points_seed);
+  // clustered: 64 gaussian blobs, centres in [0.1, 0.9]^2, std dev in [0.005, 0.035]
+  Rng rng{points_seed};
   std::vector<Point> points;
   points.reserve(n);
-  if(dist == "uniform") {
-    for(std::size_t i = 0; i < n; ++i) {
-      const double x = rng.uniform();
-      points.emplace_back(x, rng.uniform());
-    }
-  } else { // clustered: 64 gaussian blobs, centres in [0.1, 0.9]^2, std dev in [0.005, 0.035]
-    constexpr int blobs = 64;
-    double cx[blobs], cy[blobs], sd[blobs];
-    for(int b = 0; b < blobs; ++b) {
-      cx[b] = 0.1 + 0.8 * rng.uniform();
-      cy[b] = 0.1 + 0.8 * rng.uniform();
-      sd[b] = 0.005 + 0.03 * rng.uniform();
-    }
-    for(std::size_t i = 0; i < n; ++i) {
-      const int b = int(rng.below(blobs));
-      const double x = cx[b] + sd[b] * rng.normal();
-      points.emplace_back(x, cy[b] + sd[b] * rng.normal());
-    }
+  constexpr int blobs = 64;
+  double cx[blobs], cy[blobs], sd[blobs];
+  for(int b = 0; b < blobs; ++b) {
+    cx[b] = 0.1 + 0.8 * rng.uniform();
+    cy[b] = 0.1 + 0.8 * rng.uniform();
+    sd[b] = 0.005 + 0.03 * rng.uniform();
+  }
+  for(std::size_t i = 0; i < n; ++i) {
+    const int b = int(rng.below(blobs));
+    const double x = cx[b] + sd[b] * rng.normal();
+    points.emplace_back(x, cy[b] + sd[b] * rng.normal());
   }
   return points;
 }
@@ -255,64 +184,19 @@ std::size_t count_duplicates(const std::vector<Point>& points)
   return std::size_t(xy.end() - std::unique(xy.begin(), xy.end()));
 }
 
-DTI build_indexed(const std::vector<Point>& points)
-{
-  std::vector<std::pair<Point, std::uint32_t>> with_index(points.size());
-  for(std::size_t i = 0; i < points.size(); ++i)
-    with_index[i] = {points[i], std::uint32_t(i)};
-  return DTI(with_index.begin(), with_index.end());
-}
-
-// Finite faces as point-index triples, in the order the triangulation iterates them.
-std::vector<Face> export_faces(const DTI& t)
-{
-  std::vector<Face> faces;
-  faces.reserve(t.number_of_faces());
-  for(auto f = t.finite_faces_begin(); f != t.finite_faces_end(); ++f)
-    faces.push_back({f->vertex(0)->info(), f->vertex(1)->info(), f->vertex(2)->info()});
-  return faces;
-}
-
-// Random order of the list, random rotation of each triple (orientation kept).
-void shuffle_faces(std::vector<Face>& faces, Rng& rng)
-{
-  shuffle(faces, rng);
-  for(Face& f : faces) {
-    const std::size_t r = rng.below(3);
-    std::rotate(f.begin(), f.begin() + std::ptrdiff_t(r), f.end());
-  }
-}
-
 // Flips k random interior edges of `t` whose quadrilateral is strictly convex. Returns the
 // number of flips made (k unless the triangulation has too few flippable edges).
 std::size_t random_flips(DTI& t, std::size_t k, Rng& rng)
 {
-  std::vector<DTI::Face_handle> faces;
-  faces.reserve(t.number_of_faces());
-  for(auto f = t.finite_faces_begin(); f != t.finite_faces_end(); ++f)
-    faces.push_back(f);
+  const std::vector<DTI::Face_handle> faces = finite_face_handles(t);
   if(faces.empty())
     return 0;
   std::size_t done = 0, attempts = 0;
   const std::size_t max_attempts = 100 * k + 1000;
-  auto orientation = t.geom_traits().orientation_2_object();
-  while(done < k && attempts++ < max_attempts) {
-    const DTI::Face_handle f = faces[rng.below(faces.size())];
-    const int i = int(rng.below(3));
-    const DTI::Face_handle g = f->neighbor(i);
-    if(t.is_infinite(g))
-      continue;
-    // f = (p, q, s) counterclockwise, edge q-s is shared with g = (s, q, r); the flip makes
-    // p-r. Strictly convex p, q, r, s <=> both new faces (p, q, r) and (p, r, s) turn left.
-    const Point& p = f->vertex(i)->point();
-    const Point& q = f->vertex(DTI::ccw(i))->point();
-    const Point& s = f->vertex(DTI::cw(i))->point();
-    const Point& r = t.mirror_vertex(f, i)->point();
-    if(orientation(p, q, r) == CGAL::LEFT_TURN && orientation(p, r, s) == CGAL::LEFT_TURN) {
-      t.tds().flip(f, i);
+  const auto any = [](const Point&, const Point&, const Point&, const Point&) { return true; };
+  while(done < k && attempts++ < max_attempts)
+    if(try_random_flip(t, faces, rng, any))
       ++done;
-    }
-  }
   return done;
 }
 
@@ -359,53 +243,6 @@ Point moved(const Point& p, double step, std::uint64_t salt)
 }
 
 // ---------------------------------------------------------------------------------------------
-// Checks: counts and an order-independent hash of the set of finite faces, each face the
-// lexicographically sorted triple of its point coordinates.
-struct Signature
-{
-  int dimension = -2;
-  std::size_t vertices = 0, faces = 0;
-  std::uint64_t sum = 0, xor_ = 0;
-  bool operator==(const Signature& o) const
-  {
-    return dimension == o.dimension && vertices == o.vertices && faces == o.faces && sum == o.sum &&
-           xor_ == o.xor_;
-  }
-  bool operator!=(const Signature& o) const { return !(*this == o); }
-  std::string str() const
-  {
-    std::ostringstream s;
-    s << "dim " << dimension << ", " << vertices << " vertices, " << faces << " faces, hash "
-      << std::hex << sum << "/" << xor_;
-    return s.str();
-  }
-};
-
-template <class Tr>
-Signature signature(const Tr& t)
-{
-  Signature sig;
-  sig.dimension = t.dimension();
-  sig.vertices = t.number_of_vertices();
-  if(t.dimension() < 2)
-    return sig;
-  auto less = [](const Point* a, const Point* b) {
-    return a->x() < b->x() || (a->x() == b->x() && a->y() < b->y());
-  };
-  for(auto f = t.finite_faces_begin(); f != t.finite_faces_end(); ++f) {
-    const Point* p[3] = {&f->vertex(0)->point(), &f->vertex(1)->point(), &f->vertex(2)->point()};
-    std::sort(p, p + 3, less);
-    std::uint64_t h = 0x243f6a8885a308d3ull;
-    for(int j = 0; j < 3; ++j)
-      h = mix(mix(h ^ bits(p[j]->x())) ^ bits(p[j]->y()));
-    sig.sum += h;
-    sig.xor_ ^= mix(h + 0x9e3779b97f4a7c15ull);
-    ++sig.faces;
-  }
-  return sig;
-}
-
-// ---------------------------------------------------------------------------------------------
 // Options and output.
 struct Options
 {
@@ -418,17 +255,6 @@ struct Options
   std::uint64_t seed = 20260101;
   bool wants(const std::string& c) const { return std::find(cases.begin(), cases.end(), c) != cases.end(); }
 };
-
-std::vector<std::string> split(const std::string& s)
-{
-  std::vector<std::string> out;
-  std::string item;
-  std::istringstream in(s);
-  while(std::getline(in, item, ','))
-    if(!item.empty())
-      out.push_back(item);
-  return out;
-}
 
 void usage(const char* program)
 {
@@ -448,13 +274,7 @@ void usage(const char* program)
 Options parse(int argc, char** argv)
 {
   Options o;
-  auto value = [&](int& i) -> std::string {
-    if(i + 1 >= argc) {
-      std::fprintf(stderr, "missing value after %s\n", argv[i]);
-      std::exit(2);
-    }
-    return argv[++i];
-  };
+  auto value = [&](int& i) { return option_value(argc, argv, i); };
   for(int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     if(a == "--n") {
@@ -494,30 +314,11 @@ Options parse(int argc, char** argv)
       }
     } else if(a == "--seed") {
       o.seed = std::strtoull(value(i).c_str(), nullptr, 10);
-    } else if(a == "--help" || a == "-h") {
-      usage(argv[0]);
-      std::exit(0);
     } else {
-      std::fprintf(stderr, "unknown option %s\n", a.c_str());
-      usage(argv[0]);
-      std::exit(2);
+      help_or_unknown(a, argv[0], usage);
     }
   }
   return o;
-}
-
-std::string read_first(const char* file, const char* key)
-{
-  std::ifstream in(file);
-  std::string line;
-  while(std::getline(in, line))
-    if(line.compare(0, std::strlen(key), key) == 0) {
-      const auto colon = line.find(':');
-      std::string v = colon == std::string::npos ? line : line.substr(colon + 1);
-      v.erase(0, v.find_first_not_of(" \t"));
-      return v;
-    }
-  return "unknown";
 }
 
 std::string read_line(const char* file)
@@ -526,15 +327,6 @@ std::string read_line(const char* file)
   std::string line;
   std::getline(in, line);
   return line;
-}
-
-double median(std::vector<double> v)
-{
-  if(v.empty())
-    return std::numeric_limits<double>::quiet_NaN();
-  std::sort(v.begin(), v.end());
-  const std::size_t m = v.size() / 2;
-  return v.size() % 2 ? v[m] : 0.5 * (v[m - 1] + v[m]);
 }
 
 std::string join(const std::vector<double>& v)
@@ -612,13 +404,7 @@ public:
     }
     std::fflush(stdout);
     if(csv_) {
-      auto q = [](const std::string& s) {
-        std::string out = "\"";
-        for(char c : s)
-          out += c == '"' ? std::string("\"\"") : std::string(1, c);
-        return out + "\"";
-      };
-      csv_ << r.dist << ',' << r.n << ',' << r.kase << ',' << q(r.param) << ','
+      csv_ << r.dist << ',' << r.n << ',' << r.kase << ',' << csv_quote(r.param) << ','
            << (r.memory ? std::size_t(1) : std::max(r.cgal_times.size(), r.our_times.size())) << ',';
       if(r.memory)
         csv_ << ",,,,,";
@@ -626,7 +412,7 @@ public:
         csv_ << tc << ',' << to << ',' << tc / to << ',' << join(r.cgal_times) << ','
              << join(r.our_times) << ',';
       if(r.has_stats)
-        csv_ << int(r.stats.fell_back) << ',' << q(r.stats.fallback_reason ? r.stats.fallback_reason : "")
+        csv_ << int(r.stats.fell_back) << ',' << csv_quote(r.stats.fallback_reason ? r.stats.fallback_reason : "")
              << ',' << r.stats.flips << ',' << r.stats.faces_in << ',' << r.stats.faces_certified << ','
              << r.stats.points_reinserted << ',' << r.stats.edges_tested << ','
              << r.stats.edges_not_locally_delaunay << ',' << r.stats.points_unused << ',';
@@ -649,33 +435,8 @@ private:
 };
 
 // ---------------------------------------------------------------------------------------------
-// Timed calls. Each constructs its triangulation before its timer starts and destroys it after
-// the timer stops; set-up (copies, moves) and the checks run outside the timers.
-
-// CGAL's from-scratch build: range insert into an empty Delaunay_triangulation_2.
-double time_cgal(const std::vector<Point>& points, Signature& sig)
-{
-  DT dt;
-  CGAL::Real_timer timer;
-  timer.start();
-  dt.insert(points.begin(), points.end());
-  timer.stop();
-  sig = signature(dt);
-  return timer.time();
-}
-
-// Our delaunay_from_prediction().
-double time_prediction(const std::vector<Point>& points, const std::vector<Face>& faces,
-                       DFP::Statistics& stats, Signature& sig)
-{
-  DT dt;
-  CGAL::Real_timer timer;
-  timer.start();
-  stats = DFP::delaunay_from_prediction(points, faces, dt);
-  timer.stop();
-  sig = signature(dt);
-  return timer.time();
-}
+// Measurements (the timed calls are time_cgal(), time_prediction() and time_call() of
+// benchmark_util.h).
 
 // Runs `reps` repetitions of CGAL's build (`cgal`) and of ours (`ours`), interleaved (CGAL
 // first in even repetitions, ours first in odd ones) so that both see the same machine load,
@@ -759,7 +520,7 @@ void run(const Options& o, const std::string& dist, std::size_t n, Report& repor
   // 1. D = 0, shuffled faces, points in random order.
   std::vector<Face> shuffled_faces;
   if(o.wants("shuffled") || o.wants("memory")) {
-    Rng rng(seed_for(o.seed, "shuffled/" + dist, n));
+    Rng rng{seed_for(o.seed, "shuffled/" + dist, n)};
     shuffled_faces = export_faces(indexed);
     shuffle_faces(shuffled_faces, rng);
   }
@@ -788,7 +549,7 @@ void run(const Options& o, const std::string& dist, std::size_t n, Report& repor
   if(o.wants("flips")) {
     for(double fraction : {0.001, 0.01, 0.1}) {
       const std::size_t k = std::max<std::size_t>(1, std::size_t(std::llround(fraction * double(n))));
-      Rng rng(seed_for(o.seed, "flips/" + dist + "/" + std::to_string(k), n));
+      Rng rng{seed_for(o.seed, "flips/" + dist + "/" + std::to_string(k), n)};
       std::vector<Face> faces;
       std::size_t made = 0;
       {
@@ -826,12 +587,7 @@ void run(const Options& o, const std::string& dist, std::size_t n, Report& repor
                 DT tr = base;
                 for(auto v = tr.finite_vertices_begin(); v != tr.finite_vertices_end(); ++v)
                   v->set_point(moved(v->point(), step, salt));
-                CGAL::Real_timer timer;
-                timer.start();
-                st = DFP::make_delaunay(tr);
-                timer.stop();
-                s = signature(tr);
-                return timer.time();
+                return time_call(tr, [&] { st = DFP::make_delaunay(tr); }, s);
               });
       report.add(row);
     }
@@ -839,7 +595,7 @@ void run(const Options& o, const std::string& dist, std::size_t n, Report& repor
 
   // 5. Random triples.
   if(o.wants("random")) {
-    Rng rng(seed_for(o.seed, "random/" + dist, n));
+    Rng rng{seed_for(o.seed, "random/" + dist, n)};
     const std::vector<Face> faces = random_triples(n, 2 * n - 5, rng);
     Row row = new_row("random", "2n-5 random triples");
     measure_prediction(reps, row, points, faces);
@@ -886,14 +642,10 @@ int main(int argc, char** argv)
 {
   const Options o = parse(argc, argv);
 
-  // Allocator policy, fixed before the first allocation of any input. glibc trimming the heap
-  // top and mmap/munmap of large blocks made timings erratic (the same call 2x slower in one
-  // phase than in another, depending on what the previous phase had freed): "keep" serves every
-  // block from the heap and never gives memory back, so after the first repetition neither CGAL
-  // nor we pay page faults for memory an earlier step already touched.
+  // Allocator policy (see keep_freed_memory()), fixed before the first allocation of any input.
   std::string policy = "glibc default (mmap threshold and trimming as glibc decides)";
   if(o.malloc_policy == "keep") {
-    const bool ok = mallopt(M_MMAP_MAX, 0) == 1 && mallopt(M_TRIM_THRESHOLD, -1) == 1;
+    const bool ok = keep_freed_memory();
     policy = ok ? "keep: mallopt(M_MMAP_MAX, 0) + mallopt(M_TRIM_THRESHOLD, -1): no mmap'd blocks, "
                   "freed memory is never returned to the OS and is reused"
                 : "keep requested but mallopt FAILED: glibc default in effect";
@@ -909,9 +661,7 @@ int main(int argc, char** argv)
   int cpus_allowed = 0;
   if(sched_getaffinity(0, sizeof set, &set) == 0)
     cpus_allowed = CPU_COUNT(&set);
-  char date[64];
-  const std::time_t now = std::time(nullptr);
-  std::strftime(date, sizeof date, "%Y-%m-%d %H:%M:%S %Z", std::localtime(&now));
+  const std::string date = local_date_time();
   std::string sizes, dists, cases;
   for(std::size_t n : o.sizes)
     sizes += (sizes.empty() ? "" : ",") + std::to_string(n);
@@ -926,13 +676,7 @@ int main(int argc, char** argv)
          << "machine:  nproc " << cpus_allowed << " (online " << sysconf(_SC_NPROCESSORS_ONLN)
          << "), CPU " << read_first("/proc/cpuinfo", "model name") << ", RAM "
          << read_first("/proc/meminfo", "MemTotal") << ", loadavg " << read_line("/proc/loadavg") << "\n"
-         << "build:    g++ " << __VERSION__ << ", CGAL " << CGAL_VERSION_STR
-#ifdef NDEBUG
-         << ", NDEBUG (Release)"
-#else
-         << ", NOT A RELEASE BUILD (assertions on): timings are meaningless"
-#endif
-         << "\n"
+         << "build:    " << build_description() << "\n"
          << "setup:    Epick, CGAL::Delaunay_triangulation_2<Epick> for CGAL and for us, one thread,\n"
          << "          CGAL::Real_timer (wall clock), median of " << o.reps << " repetition(s), seed "
          << o.seed << "\n"

@@ -37,27 +37,18 @@
 // Usage: experiment_prediction_quality [--experiments a,b,c,d] [--large] [--reps R]
 //          [--out DIR] [--seed S] [--na LIST] [--nb N] [--nc N] [--nd LIST]
 
-#include <CGAL/Delaunay_from_prediction_2.h>
+#include "benchmark_util.h"
+
 #include <CGAL/Delaunay_from_prediction/measures.h>
 #include <CGAL/Delaunay_from_prediction/prediction_models.h>
 
-#include <CGAL/Delaunay_triangulation_2.h>
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/Real_timer.h>
-#include <CGAL/Triangulation_vertex_base_with_info_2.h>
-#include <CGAL/version.h>
-
-#include <malloc.h>
 #include <unistd.h>
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
-#include <cstring>
-#include <ctime>
 #include <fstream>
 #include <functional>
 #include <iostream>
@@ -69,53 +60,18 @@
 
 namespace {
 
-namespace DFP = CGAL::Delaunay_from_prediction;
+using namespace dfp_bench;
 
-using K = CGAL::Exact_predicates_inexact_constructions_kernel;
-using Point = K::Point_2;
-using DT = CGAL::Delaunay_triangulation_2<K>; // timed, for CGAL and for us
-using Info_vb = CGAL::Triangulation_vertex_base_with_info_2<std::uint32_t, K>;
-using DTI = CGAL::Delaunay_triangulation_2<K, CGAL::Triangulation_data_structure_2<Info_vb>>;
-using Triangle = DFP::Indexed_triangle;            // what the generators return
-using Face = std::array<std::uint32_t, 3>;         // what the timed calls read ("from a file")
+using Triangle = DFP::Indexed_triangle; // what the generators return
 
-// ---------------------------------------------------------------------------------------------
-// Random numbers and seeds (the package's own generator, so inputs are the same everywhere).
-using Rng = DFP::internal::Splitmix64;
-
-std::uint64_t mix(std::uint64_t x)
-{
-  x = (x ^ (x >> 33)) * 0xff51afd7ed558ccdull;
-  x = (x ^ (x >> 33)) * 0xc4ceb9fe1a85ec53ull;
-  return x ^ (x >> 33);
-}
-std::uint64_t bits(double d)
-{
-  std::uint64_t b;
-  std::memcpy(&b, &d, sizeof b);
-  return b;
-}
+// The seed of one input of this program (its own salt: the inputs of the recorded results).
 std::uint64_t seed_for(std::uint64_t base, const std::string& what, std::uint64_t n)
 {
-  std::uint64_t h = mix(base ^ 0x5eedull) ^ mix(n + 17);
-  for(char c : what)
-    h = mix(h ^ std::uint64_t(static_cast<unsigned char>(c)));
-  return h;
+  return salted_seed(0x5eedull, base, what, n);
 }
 
 // ---------------------------------------------------------------------------------------------
-// Inputs.
-std::vector<Point> uniform_points(std::size_t n, std::uint64_t seed)
-{
-  Rng rng{seed};
-  std::vector<Point> points;
-  points.reserve(n);
-  for(std::size_t i = 0; i < n; ++i) {
-    const double x = rng.uniform();
-    points.emplace_back(x, rng.uniform());
-  }
-  return points;
-}
+// Inputs (uniform_points() is in benchmark_util.h).
 
 // s x s cells (s = round(sqrt(n))), one point per cell at a uniform position in the middle
 // `jitter` fraction of the cell: a point set whose hull edges are about one cell long, so no
@@ -134,9 +90,7 @@ std::vector<Point> jittered_grid(std::size_t n, double jitter, std::uint64_t see
       const double x = (double(i) + lo + jitter * rng.uniform()) / double(s);
       points.emplace_back(x, (double(j) + lo + jitter * rng.uniform()) / double(s));
     }
-  // Random order, as for the uniform points.
-  for(std::size_t i = points.size(); i > 1; --i)
-    std::swap(points[i - 1], points[rng.below(i)]);
+  shuffle(points, rng); // random order, as for the uniform points
   return points;
 }
 
@@ -152,14 +106,11 @@ std::vector<Point> make_points(const std::string& set, std::size_t n, std::uint6
 // The faces as a file would give them: list in random order, each triple rotated at random.
 std::vector<Face> shuffled(const std::vector<Triangle>& in, std::uint64_t seed)
 {
-  Rng rng{seed};
   std::vector<Face> faces(in.size());
   for(std::size_t i = 0; i < in.size(); ++i)
     faces[i] = {std::uint32_t(in[i][0]), std::uint32_t(in[i][1]), std::uint32_t(in[i][2])};
-  for(std::size_t i = faces.size(); i > 1; --i)
-    std::swap(faces[i - 1], faces[rng.below(i)]);
-  for(Face& f : faces)
-    std::rotate(f.begin(), f.begin() + std::ptrdiff_t(rng.below(3)), f.end());
+  Rng rng{seed};
+  shuffle_faces(faces, rng);
   return faces;
 }
 
@@ -202,41 +153,7 @@ std::size_t wrong_edges(const std::vector<std::uint64_t>& predicted,
 }
 
 // ---------------------------------------------------------------------------------------------
-// Checks: counts and an order-independent hash of the set of finite faces.
-struct Signature
-{
-  std::size_t vertices = 0, faces = 0;
-  std::uint64_t sum = 0, xor_ = 0;
-  bool operator==(const Signature& o) const
-  {
-    return vertices == o.vertices && faces == o.faces && sum == o.sum && xor_ == o.xor_;
-  }
-  bool operator!=(const Signature& o) const { return !(*this == o); }
-};
-
-template <class Tr>
-Signature signature(const Tr& t)
-{
-  Signature sig;
-  sig.vertices = t.number_of_vertices();
-  if(t.dimension() < 2)
-    return sig;
-  auto less = [](const Point* a, const Point* b) {
-    return a->x() < b->x() || (a->x() == b->x() && a->y() < b->y());
-  };
-  for(auto f = t.finite_faces_begin(); f != t.finite_faces_end(); ++f) {
-    const Point* p[3] = {&f->vertex(0)->point(), &f->vertex(1)->point(), &f->vertex(2)->point()};
-    std::sort(p, p + 3, less);
-    std::uint64_t h = 0x243f6a8885a308d3ull;
-    for(int j = 0; j < 3; ++j)
-      h = mix(mix(h ^ bits(p[j]->x())) ^ bits(p[j]->y()));
-    sig.sum += h;
-    sig.xor_ ^= mix(h + 0x9e3779b97f4a7c15ull);
-    ++sig.faces;
-  }
-  return sig;
-}
-
+// Checks (the signature of a result is in benchmark_util.h).
 int check_failures = 0;
 void check(bool ok, const std::string& what)
 {
@@ -249,19 +166,12 @@ void check(bool ok, const std::string& what)
 }
 
 // ---------------------------------------------------------------------------------------------
-// Timing.
+// Timing (the timed calls, time_cgal(), time_prediction() and time_call(), are in
+// benchmark_util.h).
 struct Times
 {
   std::vector<double> all;
-  double median() const
-  {
-    if(all.empty())
-      return std::numeric_limits<double>::quiet_NaN();
-    std::vector<double> v = all;
-    std::sort(v.begin(), v.end());
-    const std::size_t m = v.size() / 2;
-    return v.size() % 2 ? v[m] : 0.5 * (v[m - 1] + v[m]);
-  }
+  double median() const { return dfp_bench::median(all); }
   double min() const
   {
     return all.empty() ? std::numeric_limits<double>::quiet_NaN() : *std::min_element(all.begin(), all.end());
@@ -296,42 +206,34 @@ std::vector<Times> measure(int reps, const std::vector<Timed>& algorithms, const
   return times;
 }
 
-double time_cgal(const std::vector<Point>& points, Signature& sig)
-{
-  DT dt;
-  CGAL::Real_timer timer;
-  timer.start();
-  dt.insert(points.begin(), points.end());
-  timer.stop();
-  sig = signature(dt);
-  return timer.time();
-}
-
-double time_cgal_info(const std::vector<std::pair<Point, std::uint32_t>>& with_index, Signature& sig)
-{
-  DTI dt;
-  CGAL::Real_timer timer;
-  timer.start();
-  dt.insert(with_index.begin(), with_index.end());
-  timer.stop();
-  sig = signature(dt);
-  return timer.time();
-}
-
-template <class NP>
-double time_prediction(const std::vector<Point>& points, const std::vector<Face>& faces,
-                       const NP& np, DFP::Statistics& stats, Signature& sig)
-{
-  DT dt;
-  CGAL::Real_timer timer;
-  timer.start();
-  stats = DFP::delaunay_from_prediction(points, faces, dt, np);
-  timer.stop();
-  sig = signature(dt);
-  return timer.time();
-}
-
 auto unlimited() { return DFP::parameters::max_flips((std::numeric_limits<std::size_t>::max)(), DFP::parameters::screen_prediction(false)); }
+
+// (b) and (c): CGAL's build, the call with the default flip budget (statistics in `def`) and the
+// one with no budget and no sampling screen (pure Lawson, in `unl`, which must not fall back).
+std::vector<Times> measure_budgets(int reps, const std::vector<Point>& points, const std::vector<Face>& faces,
+                                   DFP::Statistics& def, DFP::Statistics& unl, const std::string& what)
+{
+  const std::vector<Times> t = measure(
+      reps,
+      {[&](Signature& s) { return time_cgal(points, s); },
+       [&](Signature& s) { return time_prediction(points, faces, def, s); },
+       [&](Signature& s) { return time_prediction(points, faces, unl, s, unlimited()); }},
+      what);
+  check(!unl.fell_back, what + ": the unlimited call fell back");
+  return t;
+}
+
+// The prediction of `model`: "rho_adversarial", "rho_random" (the rho model, with that
+// completion) or "random_flip".
+std::vector<Triangle> model_prediction(const std::string& model, const std::vector<Point>& points, double rho,
+                                       std::uint64_t seed)
+{
+  if(model == "rho_adversarial")
+    return DFP::rho_model_prediction(points, rho, seed, DFP::Completion::adversarial);
+  if(model == "rho_random")
+    return DFP::rho_model_prediction(points, rho, seed, DFP::Completion::random);
+  return DFP::random_flip_prediction(points, rho, seed);
+}
 
 // ---------------------------------------------------------------------------------------------
 // Options.
@@ -350,16 +252,6 @@ struct Options
   }
 };
 
-std::vector<std::string> split(const std::string& s)
-{
-  std::vector<std::string> out;
-  std::string item;
-  std::istringstream in(s);
-  while(std::getline(in, item, ','))
-    if(!item.empty())
-      out.push_back(item);
-  return out;
-}
 std::size_t parse_n(const std::string& s)
 {
   const double d = std::stod(s);
@@ -389,13 +281,7 @@ void usage(const char* program)
 Options parse(int argc, char** argv)
 {
   Options o;
-  auto value = [&](int& i) -> std::string {
-    if(i + 1 >= argc) {
-      std::fprintf(stderr, "missing value after %s\n", argv[i]);
-      std::exit(2);
-    }
-    return argv[++i];
-  };
+  auto value = [&](int& i) { return option_value(argc, argv, i); };
   for(int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     if(a == "--experiments") {
@@ -423,13 +309,8 @@ Options parse(int argc, char** argv)
       o.nb = parse_n(value(i));
     } else if(a == "--nc") {
       o.nc = parse_n(value(i));
-    } else if(a == "--help" || a == "-h") {
-      usage(argv[0]);
-      std::exit(0);
     } else {
-      std::fprintf(stderr, "unknown option %s\n", a.c_str());
-      usage(argv[0]);
-      std::exit(2);
+      help_or_unknown(a, argv[0], usage);
     }
   }
   if(o.na.empty()) {
@@ -466,8 +347,6 @@ std::ofstream open_csv(const Options& o, const std::string& name)
   return f;
 }
 
-std::string q(const std::string& s) { return "\"" + s + "\""; }
-
 // ---------------------------------------------------------------------------------------------
 // (a) D = 0: time against n.
 void experiment_a(const Options& o)
@@ -483,25 +362,18 @@ void experiment_a(const Options& o)
   for(const std::size_t n : o.na) {
     const std::vector<Point> points = uniform_points(n, seed_for(o.seed, "a/points", n));
     const std::vector<Face> faces = shuffled(DFP::delaunay_triangles(points), seed_for(o.seed, "a/shuffle", n));
-    std::vector<std::pair<Point, std::uint32_t>> with_index(n);
-    for(std::size_t i = 0; i < n; ++i)
-      with_index[i] = {points[i], std::uint32_t(i)};
+    const std::vector<std::pair<Point, std::uint32_t>> with_index = with_indices(points);
     const DT base(points.begin(), points.end());
     DFP::Statistics ours, made;
     const int reps = reps_for(o, n);
     const std::vector<Times> t = measure(
         reps,
         {[&](Signature& s) { return time_cgal(points, s); },
-         [&](Signature& s) { return time_cgal_info(with_index, s); },
-         [&](Signature& s) { return time_prediction(points, faces, DFP::parameters::default_values(), ours, s); },
+         [&](Signature& s) { return time_cgal<DTI>(with_index, s); },
+         [&](Signature& s) { return time_prediction(points, faces, ours, s); },
          [&](Signature& s) {
            DT tr = base; // copy, untimed
-           CGAL::Real_timer timer;
-           timer.start();
-           made = DFP::make_delaunay(tr);
-           timer.stop();
-           s = signature(tr);
-           return timer.time();
+           return time_call(tr, [&] { made = DFP::make_delaunay(tr); }, s);
          }},
         "(a) n=" + std::to_string(n));
     check(!ours.fell_back && ours.flips == 0, "(a) delaunay_from_prediction at D = 0 flipped or fell back");
@@ -542,13 +414,7 @@ void experiment_b(const Options& o)
     const std::vector<Face> faces = shuffled(predicted, seed_for(o.seed, "b/shuffle", k));
     DFP::Statistics def, unl;
     const int reps = reps_for(o, n);
-    const std::vector<Times> t = measure(
-        reps,
-        {[&](Signature& s) { return time_cgal(points, s); },
-         [&](Signature& s) { return time_prediction(points, faces, DFP::parameters::default_values(), def, s); },
-         [&](Signature& s) { return time_prediction(points, faces, unlimited(), unl, s); }},
-        "(b) k=" + std::to_string(k));
-    check(!unl.fell_back, "(b) k=" + std::to_string(k) + ": the unlimited call fell back");
+    const std::vector<Times> t = measure_budgets(reps, points, faces, def, unl, "(b) k=" + std::to_string(k));
     check(unl.edges_not_locally_delaunay <= D && D <= unl.flips,
           "(b) k=" + std::to_string(k) + ": D_local <= D <= Lawson flips violated");
     const double c = t[0].median(), d = t[1].median(), u = t[2].median();
@@ -563,7 +429,7 @@ void experiment_b(const Options& o)
     csv << n << ',' << k << ',' << D << ',' << double(D) / double(n) << ',' << unl.edges_not_locally_delaunay
         << ',' << unl.flips << ',' << budget << ',' << reps << ',' << c << ',' << t[0].min() << ',' << d << ','
         << t[1].min() << ',' << u << ',' << t[2].min() << ',' << int(def.fell_back) << ','
-        << q(def.fallback_reason) << ',' << def.flips << ',' << c / d << ',' << c / u << '\n';
+        << csv_quote(def.fallback_reason) << ',' << def.flips << ',' << c / d << ',' << c / u << '\n';
   }
 }
 
@@ -601,13 +467,7 @@ void experiment_c(const Options& o)
       const std::uint64_t seed = seed_for(o.seed, std::string("c/") + model, std::uint64_t(rho * 1000));
       CGAL::Real_timer gen;
       gen.start();
-      std::vector<Triangle> predicted;
-      if(std::string(model) == "rho_adversarial")
-        predicted = DFP::rho_model_prediction(points, rho, seed, DFP::Completion::adversarial);
-      else if(std::string(model) == "rho_random")
-        predicted = DFP::rho_model_prediction(points, rho, seed, DFP::Completion::random);
-      else
-        predicted = DFP::random_flip_prediction(points, rho, seed);
+      std::vector<Triangle> predicted = model_prediction(model, points, rho, seed);
       gen.stop();
       const std::size_t D = wrong_edges(edges_of(predicted), dt_edges);
       const std::vector<Face> faces = shuffled(predicted, seed ^ 0xabcdefull);
@@ -615,13 +475,8 @@ void experiment_c(const Options& o)
       predicted.shrink_to_fit();
       DFP::Statistics def, unl;
       const int reps = reps_for(o, n);
-      const std::vector<Times> t = measure(
-          reps,
-          {[&](Signature& s) { return time_cgal(points, s); },
-           [&](Signature& s) { return time_prediction(points, faces, DFP::parameters::default_values(), def, s); },
-           [&](Signature& s) { return time_prediction(points, faces, unlimited(), unl, s); }},
-          std::string("(c) ") + model + " rho=" + std::to_string(rho));
-      check(!unl.fell_back, std::string("(c) ") + model + ": the unlimited call fell back");
+      const std::vector<Times> t =
+          measure_budgets(reps, points, faces, def, unl, std::string("(c) ") + model + " rho=" + std::to_string(rho));
       Row r{model, rho, D, unl.edges_not_locally_delaunay, unl.flips, def.flips, reps, gen.time(),
             t[0].median(), t[0].min(), t[1].median(), t[1].min(), t[2].median(), t[2].min(),
             def.fell_back, def.fallback_reason};
@@ -655,7 +510,7 @@ void experiment_c(const Options& o)
             << double(r.D) / double(n) << ',' << r.D_local << ',' << r.lawson << ','
             << DFP::internal::default_max_flips(n) << ',' << r.reps << ',' << r.gen << ',' << r.cgal << ','
             << r.cgal_min << ',' << r.def << ',' << r.def_min << ',' << r.unl << ',' << r.unl_min << ','
-            << int(r.fell_back) << ',' << q(r.reason) << ',' << r.default_flips << ','
+            << int(r.fell_back) << ',' << csv_quote(r.reason) << ',' << r.default_flips << ','
             << paper_shape(n, r.rho) << ',' << c << ',' << fit << '\n';
       }
     const Row* lo = nullptr;
@@ -688,39 +543,20 @@ void experiment_c(const Options& o)
 std::vector<Triangle> capped_flip_prediction(const std::vector<Point>& points, std::size_t k, double cap,
                                              std::uint64_t seed, std::size_t& made)
 {
-  std::vector<std::pair<Point, std::uint32_t>> with_index(points.size());
-  for(std::size_t i = 0; i < points.size(); ++i)
-    with_index[i] = {points[i], std::uint32_t(i)};
-  DTI dt(with_index.begin(), with_index.end());
+  DTI dt = build_indexed(points);
   const CGAL::Bbox_2 box = CGAL::bbox_2(points.begin(), points.end());
   const double spacing = std::sqrt((box.xmax() - box.xmin()) * (box.ymax() - box.ymin()) / double(points.size()));
   const double r2 = cap * cap * spacing * spacing;
-  std::vector<DTI::Face_handle> faces;
-  for(auto f = dt.finite_faces_begin(); f != dt.finite_faces_end(); ++f)
-    faces.push_back(f);
+  const std::vector<DTI::Face_handle> faces = finite_face_handles(dt);
+  const auto small_circles = [&](const Point& p, const Point& q, const Point& r, const Point& s) {
+    return CGAL::squared_radius(p, q, r) <= r2 && CGAL::squared_radius(p, r, s) <= r2;
+  };
   Rng rng{seed};
   made = 0;
-  for(std::size_t draws = 64 * (k + faces.size()); made < k && draws > 0; --draws) {
-    const DTI::Face_handle f = faces[rng.below(faces.size())];
-    const int i = int(rng.below(3));
-    const DTI::Face_handle g = f->neighbor(i);
-    if(dt.is_infinite(g))
-      continue;
-    const Point& p = f->vertex(i)->point();
-    const Point& q = f->vertex(DTI::ccw(i))->point();
-    const Point& s = f->vertex(DTI::cw(i))->point();
-    const Point& r = dt.mirror_vertex(f, i)->point();
-    if(CGAL::orientation(p, q, r) != CGAL::LEFT_TURN || CGAL::orientation(p, r, s) != CGAL::LEFT_TURN)
-      continue;
-    if(CGAL::squared_radius(p, q, r) > r2 || CGAL::squared_radius(p, r, s) > r2)
-      continue;
-    dt.tds().flip(f, i);
-    ++made;
-  }
-  std::vector<Triangle> out;
-  for(auto f = dt.finite_faces_begin(); f != dt.finite_faces_end(); ++f)
-    out.push_back({f->vertex(0)->info(), f->vertex(1)->info(), f->vertex(2)->info()});
-  return out;
+  for(std::size_t draws = 64 * (k + faces.size()); made < k && draws > 0; --draws)
+    if(try_random_flip(dt, faces, rng, small_circles))
+      ++made;
+  return export_faces<Triangle>(dt);
 }
 struct Instance
 {
@@ -828,7 +664,7 @@ void experiment_d(const Options& o)
     csv << ',';
     if(in.k > 0)
       csv << in.k;
-    csv << ',' << n << ',' << m.faces << ',' << int(m.is_triangulation) << ',' << q(m.not_a_triangulation)
+    csv << ',' << n << ',' << m.faces << ',' << int(m.is_triangulation) << ',' << csv_quote(m.not_a_triangulation)
         << ',' << m.D << ',' << m.D_missing << ',' << m.D_local << ',' << m.D_cross << ',' << m.d_cross
         << ',' << m.D_vio << ',' << m.d_vio << ',' << m.D_flip_lower << ',';
     if(m.D_flip_upper)
@@ -836,7 +672,7 @@ void experiment_d(const Options& o)
     csv << ',' << double(m.d_vio) * double(m.d_vio) << ',';
     if(in.rho > 0)
       csv << x;
-    csv << ',' << timer.time() << ',' << q(violation) << '\n';
+    csv << ',' << timer.time() << ',' << csv_quote(violation) << '\n';
     csv.flush();
   };
 
@@ -855,12 +691,7 @@ void experiment_d(const Options& o)
                                                 std::uint64_t(rho * 1000) + 7919 * n);
             in.model = model;
             in.param = in.rho = rho;
-            if(std::string(model) == "rho_adversarial")
-              in.faces = DFP::rho_model_prediction(in.points, rho, seed, DFP::Completion::adversarial);
-            else if(std::string(model) == "rho_random")
-              in.faces = DFP::rho_model_prediction(in.points, rho, seed, DFP::Completion::random);
-            else
-              in.faces = DFP::random_flip_prediction(in.points, rho, seed);
+            in.faces = model_prediction(model, in.points, rho, seed);
             run(in);
           }
       t.stop();
@@ -908,28 +739,22 @@ void experiment_d(const Options& o)
   {
     CGAL::Real_timer t;
     t.start();
+    auto run_lists = [&](const char* model, std::size_t param, auto&& configuration) {
+      Instance in;
+      in.set = "lists";
+      in.model = model;
+      in.param = double(param);
+      in.points = std::move(configuration.points);
+      in.faces = std::move(configuration.faces);
+      run(in);
+    };
     const std::size_t target = o.large ? 2000 : 1000;
     for(const std::size_t k : {2, 4, 8, 16, 32, 64}) {
       const std::size_t m = std::max<std::size_t>(1, target / k);
-      auto inst = DFP::merging_lists_configuration<K>(k, m, seed_for(o.seed, "d/merge", k));
-      Instance in;
-      in.set = "lists";
-      in.model = "merging_lists";
-      in.param = double(k);
-      in.points = std::move(inst.points);
-      in.faces = std::move(inst.faces);
-      run(in);
+      run_lists("merging_lists", k, DFP::merging_lists_configuration<K>(k, m, seed_for(o.seed, "d/merge", k)));
     }
-    for(const std::size_t n : {100, 300, 1000}) {
-      auto inst = DFP::sorting_configuration<K>(n, seed_for(o.seed, "d/sort", n));
-      Instance in;
-      in.set = "lists";
-      in.model = "sorting";
-      in.param = double(n);
-      in.points = std::move(inst.points);
-      in.faces = std::move(inst.faces);
-      run(in);
-    }
+    for(const std::size_t n : {100, 300, 1000})
+      run_lists("sorting", n, DFP::sorting_configuration<K>(n, seed_for(o.seed, "d/sort", n)));
     t.stop();
     std::printf("    merging lists, sorting: %.1f s\n", t.time());
   }
@@ -958,35 +783,16 @@ void experiment_d(const Options& o)
 int main(int argc, char** argv)
 {
   const Options o = parse(argc, argv);
-  const bool keep = mallopt(M_MMAP_MAX, 0) == 1 && mallopt(M_TRIM_THRESHOLD, -1) == 1;
+  const bool keep = keep_freed_memory();
 
   std::string command;
   for(int i = 0; i < argc; ++i)
     command += (i ? " " : "") + std::string(argv[i]);
-  char date[64];
-  const std::time_t now = std::time(nullptr);
-  std::strftime(date, sizeof date, "%Y-%m-%d %H:%M:%S %Z", std::localtime(&now));
-  std::string cpu = "unknown";
-  {
-    std::ifstream in("/proc/cpuinfo");
-    std::string line;
-    while(std::getline(in, line))
-      if(line.rfind("model name", 0) == 0) {
-        cpu = line.substr(line.find(':') + 2);
-        break;
-      }
-  }
   std::ostringstream header;
-  header << "Delaunay_from_prediction experiments, " << date << "\n"
+  header << "Delaunay_from_prediction experiments, " << local_date_time() << "\n"
          << "command: " << command << "\n"
-         << "machine: " << sysconf(_SC_NPROCESSORS_ONLN) << " CPUs online, " << cpu << "\n"
-         << "build:   g++ " << __VERSION__ << ", CGAL " << CGAL_VERSION_STR
-#ifdef NDEBUG
-         << ", NDEBUG (Release)"
-#else
-         << ", NOT A RELEASE BUILD (assertions on): timings are meaningless"
-#endif
-         << "\n"
+         << "machine: " << sysconf(_SC_NPROCESSORS_ONLN) << " CPUs online, " << read_first("/proc/cpuinfo", "model name") << "\n"
+         << "build:   " << build_description() << "\n"
          << "setup:   Epick, CGAL::Delaunay_triangulation_2<Epick> for CGAL and for us, one thread, wall clock,\n"
          << "         median (and min) of the repetitions, interleaved; malloc "
          << (keep ? "keep (no trim, no mmap)" : "glibc default (mallopt failed)") << "; seed " << o.seed << "\n";

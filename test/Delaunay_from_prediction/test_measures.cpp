@@ -39,45 +39,8 @@
 #include <type_traits>
 #include <vector>
 
-#if defined(__unix__) || defined(__APPLE__)
-#include <sys/types.h>
-#include <sys/wait.h>
-#include <unistd.h>
-#endif
-
 using namespace dfp_test;
 using Measures = DFP::Prediction_measures;
-
-// Runs `body` in a child process, where a crash (a signal: a division by zero, a null
-// dereference, a CGAL assertion) cannot take the whole test down; true if it returned or
-// threw std::invalid_argument. Where fork() is not available, runs it here.
-template <class F>
-bool survives(const F& body)
-{
-#if defined(__unix__) || defined(__APPLE__)
-  std::cout.flush();
-  std::cerr.flush();
-  const pid_t child = fork();
-  if(child == 0) {
-    int code = 0;
-    try {
-      body();
-    } catch(const std::invalid_argument&) { // Invalid_prediction included: a normal answer
-    } catch(...) { // a CGAL assertion (in a debug build), or anything unexpected
-      code = 2;
-    }
-    std::_Exit(code);
-  }
-  if(child < 0)
-    return true; // could not fork: not a failure of the code under test
-  int status = 0;
-  waitpid(child, &status, 0);
-  return WIFEXITED(status) && WEXITSTATUS(status) == 0;
-#else
-  body();
-  return true;
-#endif
-}
 
 // ---------------------------------------------------------------------------------------------
 // The reference: every measure from its definition, by brute force.
@@ -774,14 +737,7 @@ struct Measures_test
   {
     const Points points = to_points<K>({{0, 0}, {1, 0}, {0, 1}, {1, 1}});
     auto throws = [&](const auto& faces) {
-      try {
-        DFP::prediction_measures(points, faces);
-      } catch(const DFP::Invalid_prediction&) {
-        return true;
-      } catch(...) {
-        return false;
-      }
-      return false;
+      return throws_exception<DFP::Invalid_prediction>([&] { DFP::prediction_measures(points, faces); });
     };
     DFP_CHECK(throws(Faces{{0, 1, 4}}));
     DFP_CHECK(throws(Faces{{0, 1, 2}, {1, 2, std::size_t(-1)}}));
@@ -795,13 +751,7 @@ struct Measures_test
     if constexpr(std::is_same<typename K::FT, double>::value) { // no NaN in an exact number type
       Points bad = points;
       bad.push_back(make_point<K>(std::numeric_limits<double>::quiet_NaN(), 0.));
-      bool threw = false;
-      try {
-        DFP::prediction_measures(bad, Faces{{0, 1, 2}});
-      } catch(const DFP::Invalid_prediction&) {
-        threw = true;
-      }
-      DFP_CHECK(threw);
+      DFP_CHECK(throws_exception<DFP::Invalid_prediction>([&] { DFP::prediction_measures(bad, Faces{{0, 1, 2}}); }));
     }
   }
 

@@ -36,46 +36,9 @@
 #include <string>
 #include <vector>
 
-#if defined(__unix__) || defined(__APPLE__)
-#include <sys/types.h>
-#include <sys/wait.h>
-#include <unistd.h>
-#endif
-
 using namespace dfp_test;
 using Measures = DFP::Prediction_measures;
 using Edge = std::pair<std::size_t, std::size_t>;
-
-// Runs `body` in a child process, where a crash (a signal: a division by zero, a null
-// dereference, a CGAL assertion) cannot take the whole test down; true if it returned or
-// threw std::invalid_argument. Where fork() is not available, runs it here.
-template <class F>
-bool survives(const F& body)
-{
-#if defined(__unix__) || defined(__APPLE__)
-  std::cout.flush();
-  std::cerr.flush();
-  const pid_t child = fork();
-  if(child == 0) {
-    int code = 0;
-    try {
-      body();
-    } catch(const std::invalid_argument&) { // Invalid_prediction included: a normal answer
-    } catch(...) { // a CGAL assertion (in a debug build), or anything unexpected
-      code = 2;
-    }
-    std::_Exit(code);
-  }
-  if(child < 0)
-    return true; // could not fork: not a failure of the code under test
-  int status = 0;
-  waitpid(child, &status, 0);
-  return WIFEXITED(status) && WEXITSTATUS(status) == 0;
-#else
-  body();
-  return true;
-#endif
-}
 
 Edge edge(std::size_t a, std::size_t b) { return a < b ? Edge(a, b) : Edge(b, a); }
 
@@ -553,16 +516,7 @@ struct Models_test
 
   void bad_arguments(const Points& points)
   {
-    auto throws_invalid_argument = [](const auto& f) {
-      try {
-        f();
-      } catch(const std::invalid_argument&) {
-        return true;
-      } catch(...) {
-        return false;
-      }
-      return false;
-    };
+    auto throws_invalid_argument = [](const auto& f) { return throws_exception<std::invalid_argument>(f); };
     const double nan = std::numeric_limits<double>::quiet_NaN();
     for(double rho : {-0.1, 1.5, nan}) {
       Scope s("rho = ", rho);

@@ -24,15 +24,23 @@
 #include <cctype>
 #include <cmath>
 #include <cstddef>
+#include <cstdlib>
 #include <exception>
 #include <iostream>
 #include <map>
 #include <set>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 #include <type_traits>
 #include <utility>
 #include <vector>
+
+#if defined(__unix__) || defined(__APPLE__)
+#include <sys/types.h>
+#include <sys/wait.h>
+#include <unistd.h>
+#endif
 
 namespace dfp_test {
 
@@ -94,6 +102,51 @@ inline int finish(const char* test_name)
   }
   std::cerr << test_name << ": " << failures() << " check(s) FAILED" << std::endl;
   return 1;
+}
+
+// True if body() throws an E; false if it returns or throws anything else.
+template <class E, class F>
+bool throws_exception(const F& body)
+{
+  try {
+    body();
+  } catch(const E&) {
+    return true;
+  } catch(...) {
+    return false;
+  }
+  return false;
+}
+
+// Runs `body` in a child process, where a crash (a signal: a division by zero, a null
+// dereference, a CGAL assertion) cannot take the whole test down; true if it returned or
+// threw std::invalid_argument. Where fork() is not available, runs it here.
+template <class F>
+bool survives(const F& body)
+{
+#if defined(__unix__) || defined(__APPLE__)
+  std::cout.flush();
+  std::cerr.flush();
+  const pid_t child = fork();
+  if(child == 0) {
+    int code = 0;
+    try {
+      body();
+    } catch(const std::invalid_argument&) { // Invalid_prediction included: a normal answer
+    } catch(...) { // a CGAL assertion (in a debug build), or anything unexpected
+      code = 2;
+    }
+    std::_Exit(code);
+  }
+  if(child < 0)
+    return true; // could not fork: not a failure of the code under test
+  int status = 0;
+  waitpid(child, &status, 0);
+  return WIFEXITED(status) && WEXITSTATUS(status) == 0;
+#else
+  body();
+  return true;
+#endif
 }
 
 } // namespace dfp_test

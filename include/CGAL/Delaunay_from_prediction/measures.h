@@ -327,7 +327,8 @@ around a vertex of each wrong face.
 \cgalNamedParamsEnd
 
 \returns the measures.
-\throws Invalid_prediction for malformed input, as `delaunay_from_prediction()` does.
+\throws Invalid_prediction for malformed input, as `delaunay_from_prediction()` does, and for
+        \f$2^{32}\f$ or more points or faces.
 */
 template <class PointRange, class FaceRange,
           class NamedParameters = parameters::Default_named_parameters>
@@ -358,6 +359,8 @@ Prediction_measures prediction_measures(const PointRange& points, const FaceRang
   const Statistics stats = delaunay_from_prediction(
       points, faces, dt, parameters::max_flips(max_flips, parameters::screen_prediction(false)));
   m.faces = stats.faces_in;
+  if(m.faces >= (std::size_t(1) << 32))
+    throw Invalid_prediction("Delaunay_from_prediction: prediction_measures takes fewer than 2^32 faces");
 
   // Each index's vertex; equal points share the vertex of the smallest index.
   std::vector<Vertex_handle> vertex_of(n);
@@ -380,7 +383,7 @@ Prediction_measures prediction_measures(const PointRange& points, const FaceRang
   }
   auto canonical = [&](std::size_t i) { return std::size_t(vertex_of[i]->info()); };
 
-  // DT's edges and faces, as sorted keys of canonical indices.
+  // DT's edges as sorted keys of canonical indices, and the degrees.
   std::vector<std::uint64_t> dt_edges;
   std::vector<std::size_t> degree(n, 0);
   dt_edges.reserve(3 * n);
