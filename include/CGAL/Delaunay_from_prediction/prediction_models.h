@@ -282,33 +282,19 @@ rho_model_prediction(const PointRange& points, double rho, std::uint64_t seed,
       if(edges.draw(random, f, i) && !is_kept(f, i))
         internal::flip_if_convex(dt, f, i);
   } else {
+    // The flip loop of lawson_flip.h, flipping the other way: locally Delaunay edges not in R.
     const auto& gt = dt.geom_traits();
     std::vector<std::pair<Face_handle, int>> stack;
     for(auto f = dt.finite_faces_begin(); f != dt.finite_faces_end(); ++f)
       for(int i = 0; i < 3; ++i)
         stack.emplace_back(f, i);
-    std::size_t budget = 64 * edges.number_of_edges();
-    while(!stack.empty() && budget > 0) {
-      const Face_handle f = stack.back().first;
-      const int i = stack.back().second;
-      stack.pop_back();
-      const Face_handle g = f->neighbor(i);
-      if(dt.is_infinite(g) || is_kept(f, i))
-        continue;
-      const int j = dt.tds().mirror_index(f, i);
-      if(!internal::is_locally_delaunay(gt, f->vertex(i)->point(), f->vertex(internal::ccw(i))->point(),
-                                        f->vertex(internal::cw(i))->point(), g->vertex(j)->point()))
-        continue;
-      if(!internal::flip_if_convex(dt, f, i))
-        continue;
-      --budget;
-      // The flip keeps the slots of f and g (see lawson_flip.h): their outer edges are f's
-      // i and cw(i), g's j and cw(j).
-      stack.emplace_back(f, i);
-      stack.emplace_back(f, internal::cw(i));
-      stack.emplace_back(g, j);
-      stack.emplace_back(g, internal::cw(j));
-    }
+    auto locally_delaunay_and_free = [&](Face_handle f, int i, const auto& a, const auto& b,
+                                         const auto& c, const auto& d) {
+      return !is_kept(f, i) && internal::is_locally_delaunay(gt, a, b, c, d);
+    };
+    std::size_t flips = 0;
+    internal::flip_edges_while(dt, stack, locally_delaunay_and_free, 64 * edges.number_of_edges(),
+                               flips, static_cast<std::vector<Face_handle>*>(nullptr));
   }
   return internal::faces_of(dt);
 }

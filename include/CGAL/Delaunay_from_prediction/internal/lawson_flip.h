@@ -31,10 +31,60 @@ bool flip_makes_ccw_faces(const Gt& gt, const Point& a, const Point& b, const Po
   return orientation(a, b, d) == LEFT_TURN && orientation(a, d, c) == LEFT_TURN;
 }
 
-// Flips until every edge is locally Delaunay, or until `max_flips` flips have been made
-// (returns false then; the triangulation is still a valid triangulation of the same
-// vertices). `stack` holds candidate edges (face, index); any edge may be listed, stale or
-// twice: each is tested when popped. `touched` receives both faces of every flip.
+// The flip loop: pops candidate edges (face, index) from `stack` and flips each interior edge
+// for which `wants_flip(f, i, a, b, c, d)` holds ((b, c) the edge, a opposite in f, d opposite
+// in its neighbour) and whose quadrilateral is strictly convex, queueing the four edges around
+// every flip; until the stack is empty (returns true) or `max_flips` flips have been made
+// (returns false; the triangulation is still a valid triangulation of the same vertices). Any
+// edge may be listed, stale or twice: each is tested when popped. If `touched` is not null it
+// receives both faces of every flip.
+template <class Triangulation, class WantsFlip>
+bool flip_edges_while(Triangulation& tr,
+                      std::vector<std::pair<typename Triangulation::Face_handle, int>>& stack,
+                      WantsFlip wants_flip, std::size_t max_flips, std::size_t& flips,
+                      std::vector<typename Triangulation::Face_handle>* touched)
+{
+  using Face_handle = typename Triangulation::Face_handle;
+  const auto& gt = tr.geom_traits();
+  const auto infinite = tr.infinite_vertex();
+  auto& tds = tr.tds();
+  while(!stack.empty()) {
+    const Face_handle f = stack.back().first;
+    const int i = stack.back().second;
+    stack.pop_back();
+    const Face_handle g = f->neighbor(i);
+    if(f->has_vertex(infinite) || g->has_vertex(infinite))
+      continue; // hull edges cannot be flipped
+    const int j = tds.mirror_index(f, i);
+    const auto& a = f->vertex(i)->point();
+    const auto& b = f->vertex(ccw(i))->point();
+    const auto& c = f->vertex(cw(i))->point();
+    const auto& d = g->vertex(j)->point();
+    if(!wants_flip(f, i, a, b, c, d))
+      continue;
+    if(!flip_makes_ccw_faces(gt, a, b, c, d))
+      continue;
+    if(flips >= max_flips)
+      return false;
+    // After the flip f = (a, b, d) and g = (d, c, a), with the same slots: their four outer
+    // edges are f's i and cw(i), g's j and cw(j).
+    tds.flip(f, i);
+    ++flips;
+    if(touched != nullptr) {
+      touched->push_back(f);
+      touched->push_back(g);
+    }
+    stack.emplace_back(f, i);
+    stack.emplace_back(f, cw(i));
+    stack.emplace_back(g, j);
+    stack.emplace_back(g, cw(j));
+  }
+  return true;
+}
+
+// Lawson's algorithm: flips until every edge is locally Delaunay, or until `max_flips` flips
+// have been made (returns false then), starting from the candidate edges in `stack`.
+// `touched` receives both faces of every flip.
 //
 // Termination: with exact predicates each flip strictly lowers the lifted (perturbed)
 // surface, so no triangulation repeats; with an inexact kernel the budget stops a cycle.
@@ -47,40 +97,10 @@ bool lawson_flip(Triangulation& tr,
                  std::size_t max_flips, std::size_t& flips,
                  std::vector<typename Triangulation::Face_handle>& touched)
 {
-  using Face_handle = typename Triangulation::Face_handle;
   const auto& gt = tr.geom_traits();
-  const auto infinite = tr.infinite_vertex();
-  auto& tds = tr.tds();
-  while(!stack.empty()) {
-    const Face_handle f = stack.back().first;
-    const int i = stack.back().second;
-    stack.pop_back();
-    const Face_handle g = f->neighbor(i);
-    if(f->has_vertex(infinite) || g->has_vertex(infinite))
-      continue; // hull edges have no Delaunay condition
-    const int j = tds.mirror_index(f, i);
-    const auto& a = f->vertex(i)->point();
-    const auto& b = f->vertex(ccw(i))->point();
-    const auto& c = f->vertex(cw(i))->point();
-    const auto& d = g->vertex(j)->point();
-    if(is_locally_delaunay(gt, a, b, c, d))
-      continue;
-    if(!flip_makes_ccw_faces(gt, a, b, c, d))
-      continue; // only reachable with an inexact kernel
-    if(flips >= max_flips)
-      return false;
-    // After the flip f = (a, b, d) and g = (d, c, a), with the same slots: their four outer
-    // edges are f's i and cw(i), g's j and cw(j).
-    tds.flip(f, i);
-    ++flips;
-    touched.push_back(f);
-    touched.push_back(g);
-    stack.emplace_back(f, i);
-    stack.emplace_back(f, cw(i));
-    stack.emplace_back(g, j);
-    stack.emplace_back(g, cw(j));
-  }
-  return true;
+  auto not_locally_delaunay = [&gt](const auto&, int, const auto& a, const auto& b, const auto& c,
+                                    const auto& d) { return !is_locally_delaunay(gt, a, b, c, d); };
+  return flip_edges_while(tr, stack, not_locally_delaunay, max_flips, flips, &touched);
 }
 
 } // namespace internal
