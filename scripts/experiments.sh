@@ -4,7 +4,9 @@
 # time against D (k random flips), time against rho (rho model and random-flip model), and the
 # relations between the measures of Table 1 of the paper. Writes the CSV files (and the
 # program's log) to benchmark/Delaunay_from_prediction/results/ and draws the figures with
-# gnuplot (scripts/plot_experiments.gnuplot) into doc/Delaunay_from_prediction/fig/.
+# gnuplot (scripts/plot_experiments.gnuplot) into doc/Delaunay_from_prediction/fig/. Also draws the
+# manual's figure of a carved prediction, doc/Delaunay_from_prediction/fig/carved_prediction.svg
+# (benchmark/Delaunay_from_prediction/figure_carved_prediction.cpp).
 # Installs the build dependencies and gnuplot-nox with apt-get if they are missing.
 #
 # Usage: scripts/experiments.sh [--large] [--png] [program options]
@@ -41,6 +43,7 @@ fi
 
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release
 cmake --build build -j2 --target experiment_prediction_quality
+cmake --build build -j2 --target figure_carved_prediction
 
 results=benchmark/Delaunay_from_prediction/results
 figures=doc/Delaunay_from_prediction/fig
@@ -56,5 +59,9 @@ rc=0
 build/benchmark/Delaunay_from_prediction/experiment_prediction_quality --out "$results" "${args[@]}" \
   | tee "$results/experiments_log.txt" || rc=$?
 gnuplot -e "results='$results'; figdir='$figures'; fmt='$fmt'" scripts/plot_experiments.gnuplot
+# The manual's figure of a carved prediction (an SVG the program draws itself; same with --large
+# and --png). It prints make_delaunay's statistics and fails if the result is not CGAL's.
+build/benchmark/Delaunay_from_prediction/figure_carved_prediction \
+  doc/Delaunay_from_prediction/fig/carved_prediction.svg --n 400 --sigma 0.1 --seed 7 || rc=$?
 echo "experiments and figures: $(( $(date +%s) - start )) s; CSV files in $results/, figures in $figures/"
 exit $rc

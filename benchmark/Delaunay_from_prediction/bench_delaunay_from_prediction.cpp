@@ -21,14 +21,26 @@
 //             CGAL's reference is a from-scratch build of the moved points.
 //   random    2n-5 random index triples (distinct indices) as a prediction.
 //   memory    peak heap bytes of the `shuffled` call vs CGAL's from-scratch build.
+//   kinetic   make_delaunay() on a CGAL DT with point indices in info() whose every vertex was
+//             moved by noise (--noise: gaussian, each coordinate N(0, s^2), or disk, uniform in
+//             the disk of radius s) of scale s = sigma x mean spacing sqrt(A/n) (A: area of the
+//             bounding box), sigma = 0.001 ... 0.5, with strategy carve (local repair) and
+//             strategy flips (the behaviour before local repair: a triangulation with an
+//             inverted face is rebuilt in place). Every repetition copies the moved DT
+//             (untimed) and times the call alone. Also reported: inverted and flat faces
+//             before the call, faces carved, holes refilled, points reinserted, time per
+//             reinserted point. CGAL's reference is a from-scratch build of the moved points.
+//   deleted   delaunay_from_prediction() from the Delaunay faces with 1% and 10% of them
+//             deleted (each independently), list shuffled, strategy carve vs strategy flips.
 //
 // Every result of ours is compared with CGAL's (vertex and face counts and an order-independent
 // hash of the face set as sorted coordinate triples), outside the timers; a mismatch prints
 // "CHECK FAILED" and makes the program exit with status 1.
 //
 // Usage: bench_delaunay_from_prediction [--n 100000,1000000] [--reps 3]
-//          [--cases shuffled,hilbert,flips,move,random,memory] [--dist uniform,clustered]
-//          [--csv FILE] [--malloc keep|default] [--seed S]
+//          [--cases shuffled,hilbert,flips,move,random,memory,kinetic,deleted]
+//          [--dist uniform,clustered] [--noise gaussian,disk] [--csv FILE]
+//          [--malloc keep|default] [--seed S]
 
 #include "benchmark_util.h"
 
@@ -44,6 +56,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
+#include <functional>
 #include <iomanip>
 #include <iostream>
 #include <limits>
@@ -242,6 +255,70 @@ Point moved(const Point& p, double step, std::uint64_t salt)
   return Point(p.x() + step * std::cos(angle), p.y() + step * std::sin(angle));
 }
 
+// Mean spacing sqrt(A/n), A the area of the bounding box of the points (the unit of
+// moved_points_prediction() in prediction_models.h).
+double mean_spacing(const std::vector<Point>& points)
+{
+  if(points.empty())
+    return 0.;
+  double x0 = points[0].x(), x1 = x0, y0 = points[0].y(), y1 = y0;
+  for(const Point& p : points) {
+    x0 = std::min(x0, p.x());
+    x1 = std::max(x1, p.x());
+    y0 = std::min(y0, p.y());
+    y1 = std::max(y1, p.y());
+  }
+  return std::sqrt((x1 - x0) * (y1 - y0) / double(points.size()));
+}
+
+// The points moved by independent noise of scale `step`, point i by the i-th draw of a
+// generator seeded with `seed` (so the same seed gives the same field at every scale):
+// gaussian, each coordinate plus N(0, step^2); disk, a point uniform in the disk of radius step.
+std::vector<Point> noisy_points(const std::vector<Point>& points, const std::string& noise,
+                                double step, std::uint64_t seed)
+{
+  Rng rng{seed};
+  std::vector<Point> out;
+  out.reserve(points.size());
+  for(const Point& p : points) {
+    double dx, dy;
+    if(noise == "gaussian") {
+      dx = step * rng.normal();
+      dy = step * rng.normal();
+    } else {
+      const double radius = step * std::sqrt(rng.uniform());
+      const double angle = 2. * M_PI * rng.uniform();
+      dx = radius * std::cos(angle);
+      dy = radius * std::sin(angle);
+    }
+    out.emplace_back(p.x() + dx, p.y() + dy);
+  }
+  return out;
+}
+
+// Finite faces of `t` that are clockwise (inverted) and flat, e.g. after its points moved.
+std::pair<std::size_t, std::size_t> inverted_and_flat_faces(const DTI& t)
+{
+  std::size_t inverted = 0, flat = 0;
+  const auto orientation = t.geom_traits().orientation_2_object();
+  for(auto f = t.finite_faces_begin(); f != t.finite_faces_end(); ++f) {
+    const CGAL::Orientation o =
+        orientation(f->vertex(0)->point(), f->vertex(1)->point(), f->vertex(2)->point());
+    inverted += o == CGAL::RIGHT_TURN ? 1 : 0;
+    flat += o == CGAL::COLLINEAR ? 1 : 0;
+  }
+  return {inverted, flat};
+}
+
+// The strategies compared by the kinetic and deleted cases.
+struct Named_strategy
+{
+  const char* name;
+  DFP::Strategy strategy;
+};
+const Named_strategy repair_strategies[] = {{"carve", DFP::Strategy::carve},
+                                            {"flips", DFP::Strategy::flips}};
+
 // ---------------------------------------------------------------------------------------------
 // Options and output.
 struct Options
@@ -250,6 +327,7 @@ struct Options
   int reps = 3;
   std::vector<std::string> cases{"shuffled", "hilbert", "flips", "move", "random", "memory"};
   std::vector<std::string> dists{"uniform", "clustered"};
+  std::vector<std::string> noises{"gaussian"};
   std::string csv;
   std::string malloc_policy = "keep";
   std::uint64_t seed = 20260101;
@@ -262,8 +340,10 @@ void usage(const char* program)
       "usage: %s [options]\n"
       "  --n LIST        numbers of points, comma separated, 1e6 notation allowed (default 100000,1000000)\n"
       "  --reps R        repetitions per measurement, the median is reported (default 3)\n"
-      "  --cases LIST    subset of shuffled,hilbert,flips,move,random,memory (default all)\n"
+      "  --cases LIST    subset of shuffled,hilbert,flips,move,random,memory,kinetic,deleted\n"
+      "                  (default shuffled,hilbert,flips,move,random,memory)\n"
       "  --dist LIST     subset of uniform,clustered (default both)\n"
+      "  --noise LIST    noise of the kinetic case, subset of gaussian,disk (default gaussian)\n"
       "  --csv FILE      also write one CSV row per measurement to FILE\n"
       "  --malloc P      keep (default): mallopt(M_MMAP_MAX=0, M_TRIM_THRESHOLD=-1), freed memory is\n"
       "                  kept by the process and reused; default: glibc's own policy\n"
@@ -293,7 +373,7 @@ Options parse(int argc, char** argv)
       o.cases = split(value(i));
       for(const std::string& c : o.cases)
         if(c != "shuffled" && c != "hilbert" && c != "flips" && c != "move" && c != "random" &&
-           c != "memory") {
+           c != "memory" && c != "kinetic" && c != "deleted") {
           std::fprintf(stderr, "unknown case %s\n", c.c_str());
           std::exit(2);
         }
@@ -302,6 +382,13 @@ Options parse(int argc, char** argv)
       for(const std::string& d : o.dists)
         if(d != "uniform" && d != "clustered") {
           std::fprintf(stderr, "unknown distribution %s\n", d.c_str());
+          std::exit(2);
+        }
+    } else if(a == "--noise") {
+      o.noises = split(value(i));
+      for(const std::string& d : o.noises)
+        if(d != "gaussian" && d != "disk") {
+          std::fprintf(stderr, "unknown noise %s\n", d.c_str());
           std::exit(2);
         }
     } else if(a == "--csv") {
@@ -349,7 +436,25 @@ struct Row
   std::size_t cgal_bytes = 0, our_bytes = 0;
   bool ok = true;
   std::string failure;
+  // The value of our call's `strategy` named parameter ("automatic": not passed).
+  std::string strategy = "automatic";
+  // kinetic and deleted: a second line with the local repair's statistics, and the damage of
+  // the prediction before the call (-1: not applicable): finite faces inverted (clockwise) and
+  // flat, faces deleted.
+  bool repair_details = false;
+  long long inverted = -1, flat = -1, deleted = -1;
 };
+
+// Median time of our call per point it (re)inserted, in microseconds (NaN if none): an upper
+// bound of the cost of one reinsertion, certification and flips included.
+double us_per_reinserted_point(const Row& r)
+{
+  if(!r.has_stats || r.stats.points_reinserted == 0)
+    return std::numeric_limits<double>::quiet_NaN();
+  return 1e6 * median(r.our_times) / double(r.stats.points_reinserted);
+}
+
+std::string csv_count(long long v) { return v < 0 ? std::string() : std::to_string(v); }
 
 class Report
 {
@@ -393,7 +498,9 @@ public:
     } else {
       std::string path = "-";
       if(r.has_stats)
-        path = r.stats.fell_back ? "FALLBACK" : "predict";
+        path = r.stats.fell_back ? "FALLBACK"
+               : r.stats.faces_carved > 0 || r.stats.holes_refilled > 0 ? "repair"
+                                                                        : "predict";
       std::string check = r.ok ? "ok" : "FAILED";
       if(r.has_stats && r.stats.fell_back && r.stats.fallback_reason && *r.stats.fallback_reason)
         check += std::string(" (") + r.stats.fallback_reason + ")";
@@ -401,6 +508,27 @@ public:
                   r.n, r.kase.c_str(), r.param.c_str(), tc, to, tc / to, path.c_str(),
                   r.has_stats ? r.stats.flips : 0, r.has_stats ? r.stats.edges_not_locally_delaunay : 0,
                   check.c_str());
+      if(r.repair_details) {
+        std::ostringstream line;
+        line << std::string(19, ' ') << "before: ";
+        if(r.deleted >= 0)
+          line << "deleted " << r.deleted << " faces";
+        else
+          line << "inverted " << r.inverted << ", flat " << r.flat;
+        line << " | after (" << r.strategy << "): ";
+        if(r.has_stats) {
+          line << "fell_back " << (r.stats.fell_back ? "yes" : "no") << ", carved "
+               << r.stats.faces_carved << ", holes " << r.stats.holes_refilled << ", rounds "
+               << r.stats.carve_rounds << ", reinserted " << r.stats.points_reinserted
+               << ", flips " << r.stats.flips;
+          const double us = us_per_reinserted_point(r);
+          if(std::isfinite(us))
+            line << std::fixed << std::setprecision(3) << ", " << us << " us/reinserted pt";
+        } else {
+          line << "no statistics";
+        }
+        std::printf("%s\n", line.str().c_str());
+      }
     }
     std::fflush(stdout);
     if(csv_) {
@@ -423,7 +551,19 @@ public:
              << (r.cgal_bytes ? double(r.our_bytes) / double(r.cgal_bytes) : 0.) << ',';
       else
         csv_ << ",,,";
-      csv_ << (r.ok ? "ok" : "FAILED") << '\n';
+      csv_ << (r.ok ? "ok" : "FAILED");
+      // Columns added with local repair, after `check` so that older readers are unaffected.
+      csv_ << ',' << r.strategy << ',' << csv_count(r.inverted) << ',' << csv_count(r.flat) << ','
+           << csv_count(r.deleted) << ',';
+      if(r.has_stats) {
+        csv_ << r.stats.faces_carved << ',' << r.stats.holes_refilled << ',' << r.stats.carve_rounds << ',';
+        const double us = us_per_reinserted_point(r);
+        if(std::isfinite(us))
+          csv_ << us;
+      } else {
+        csv_ << ",,,";
+      }
+      csv_ << '\n';
       csv_.flush();
     }
   }
@@ -438,44 +578,75 @@ private:
 // Measurements (the timed calls are time_cgal(), time_prediction() and time_call() of
 // benchmark_util.h).
 
-// Runs `reps` repetitions of CGAL's build (`cgal`) and of ours (`ours`), interleaved (CGAL
-// first in even repetitions, ours first in odd ones) so that both see the same machine load,
-// and checks every result of ours against CGAL's.
+// One timed call of ours: fills the statistics and the signature, returns the time.
+using Our_call = std::function<double(DFP::Statistics&, Signature&)>;
+
+// Runs `reps` repetitions of CGAL's build (`cgal`) and of each call ours[j] (its results go to
+// *rows[j], and so do CGAL's times, shared by all rows), in an order that rotates with the
+// repetition (repetition r starts with the (r mod (m + 1))-th of CGAL, ours[0], ...,
+// ours[m - 1]; with one call of ours: CGAL first in even repetitions, ours first in odd ones)
+// so that all see the same machine load, and checks every result of ours against CGAL's. A
+// call that throws fails its row and is not repeated.
+template <class Cgal>
+void measure_all(int reps, const std::vector<Row*>& rows, Cgal cgal, const std::vector<Our_call>& ours)
+{
+  const std::size_t m = ours.size();
+  Signature reference;
+  std::vector<double> cgal_times;
+  bool cgal_agrees = true;
+  std::vector<std::vector<Signature>> results(m);
+  std::vector<bool> alive(m, true);
+  std::size_t alive_count = m;
+  for(int r = 0; r < reps && alive_count > 0; ++r) {
+    for(std::size_t turn = 0; turn <= m && alive_count > 0; ++turn) {
+      const std::size_t slot = (turn + std::size_t(r)) % (m + 1); // 0: CGAL, j + 1: ours[j]
+      if(slot == 0) {
+        Signature s;
+        cgal_times.push_back(cgal(s));
+        if(cgal_times.size() == 1)
+          reference = s;
+        else if(s != reference)
+          cgal_agrees = false;
+        continue;
+      }
+      const std::size_t j = slot - 1;
+      if(!alive[j])
+        continue;
+      Row& row = *rows[j];
+      Signature s;
+      try {
+        row.our_times.push_back(ours[j](row.stats, s));
+      } catch(const std::exception& e) {
+        row.ok = false;
+        row.failure = std::string("exception: ") + e.what();
+        alive[j] = false;
+        --alive_count;
+        continue;
+      }
+      row.has_stats = true;
+      results[j].push_back(s);
+    }
+  }
+  for(std::size_t j = 0; j < m; ++j) {
+    Row& row = *rows[j];
+    row.cgal_times = cgal_times;
+    if(!cgal_agrees && row.ok) {
+      row.ok = false;
+      row.failure = "CGAL's own repetitions disagree";
+    }
+    for(const Signature& s : results[j])
+      if(s != reference && row.ok) {
+        row.ok = false;
+        row.failure = "ours: " + s.str() + "; CGAL: " + reference.str();
+      }
+  }
+}
+
+// The same with one call of ours.
 template <class Cgal, class Ours>
 void measure(int reps, Row& row, Cgal cgal, Ours ours)
 {
-  Signature reference;
-  std::vector<Signature> results;
-  for(int r = 0; r < reps; ++r) {
-    for(int turn = 0; turn < 2; ++turn) {
-      if((turn == 0) == (r % 2 == 0)) {
-        Signature s;
-        row.cgal_times.push_back(cgal(s));
-        if(row.cgal_times.size() == 1)
-          reference = s;
-        else if(s != reference && row.ok) {
-          row.ok = false;
-          row.failure = "CGAL's own repetitions disagree";
-        }
-      } else {
-        Signature s;
-        try {
-          row.our_times.push_back(ours(row.stats, s));
-        } catch(const std::exception& e) {
-          row.ok = false;
-          row.failure = std::string("exception: ") + e.what();
-          return;
-        }
-        row.has_stats = true;
-        results.push_back(s);
-      }
-    }
-  }
-  for(const Signature& s : results)
-    if(s != reference && row.ok) {
-      row.ok = false;
-      row.failure = "ours: " + s.str() + "; CGAL: " + reference.str();
-    }
+  measure_all(reps, {&row}, cgal, {Our_call(ours)});
 }
 
 // A delaunay_from_prediction() case: CGAL builds `points` from scratch, we build them from
@@ -505,7 +676,8 @@ void run(const Options& o, const std::string& dist, std::size_t n, Report& repor
 
   // The Delaunay triangulation of `points`, with point indices (set-up, untimed).
   DTI indexed;
-  if(o.wants("shuffled") || o.wants("flips") || o.wants("move") || o.wants("memory"))
+  if(o.wants("shuffled") || o.wants("flips") || o.wants("move") || o.wants("memory") ||
+     o.wants("kinetic") || o.wants("deleted"))
     indexed = build_indexed(points);
 
   auto new_row = [&](const std::string& kase, const std::string& param) {
@@ -634,6 +806,84 @@ void run(const Options& o, const std::string& dist, std::size_t n, Report& repor
     }
     report.add(row);
   }
+
+  // 7. Kinetic: make_delaunay() on CGAL's DT with point indices in info(), every vertex moved
+  //    by noise of scale sigma x mean spacing (point i by the i-th draw, the same field for
+  //    every sigma), strategy carve vs strategy flips. Every repetition copies the moved DT and
+  //    times make_delaunay() alone. CGAL builds the moved points from scratch (plain DT, range
+  //    insert), its repetitions shared by both strategies.
+  if(o.wants("kinetic")) {
+    const double spacing = mean_spacing(points);
+    for(const std::string& noise : o.noises) {
+      const std::uint64_t noise_seed = seed_for(o.seed, "kinetic/" + dist + "/" + noise, n);
+      for(double sigma : {0.001, 0.01, 0.1, 0.5}) {
+        const double step = sigma * spacing;
+        const std::vector<Point> moved_points = noisy_points(points, noise, step, noise_seed);
+        DTI moved_tr = indexed;
+        for(auto v = moved_tr.finite_vertices_begin(); v != moved_tr.finite_vertices_end(); ++v)
+          v->set_point(moved_points[v->info()]);
+        const auto damage = inverted_and_flat_faces(moved_tr);
+        std::vector<Row> rows;
+        std::vector<Our_call> calls;
+        for(const Named_strategy& st : repair_strategies) {
+          std::ostringstream param;
+          param << "sigma=" << sigma << " " << (noise == "gaussian" ? "gauss" : noise) << ", "
+                << st.name;
+          Row row = new_row("kinetic", param.str());
+          row.strategy = st.name;
+          row.repair_details = true;
+          row.inverted = (long long)damage.first;
+          row.flat = (long long)damage.second;
+          rows.push_back(row);
+          const DFP::Strategy strategy = st.strategy;
+          calls.push_back([&moved_tr, strategy](DFP::Statistics& stats, Signature& s) {
+            DTI tr = moved_tr; // untimed copy
+            return time_call(tr, [&] { stats = DFP::make_delaunay(tr, DFP::parameters::strategy(strategy)); }, s);
+          });
+        }
+        std::vector<Row*> row_pointers;
+        for(Row& row : rows)
+          row_pointers.push_back(&row);
+        measure_all(reps, row_pointers, [&](Signature& s) { return time_cgal(moved_points, s); }, calls);
+        for(const Row& row : rows)
+          report.add(row);
+      }
+    }
+  }
+
+  // 8. Deleted faces: the Delaunay faces, each deleted with probability 1% or 10%, the rest
+  //    shuffled (as in case 3), strategy carve vs strategy flips. CGAL builds the points from
+  //    scratch, its repetitions shared by both strategies.
+  if(o.wants("deleted")) {
+    for(double fraction : {0.01, 0.1}) {
+      Rng rng{seed_for(o.seed, "deleted/" + dist + "/" + percent(fraction), n)};
+      std::vector<Face> faces;
+      const std::vector<Face> all = export_faces(indexed);
+      for(const Face& f : all)
+        if(!(rng.uniform() < fraction))
+          faces.push_back(f);
+      shuffle_faces(faces, rng);
+      std::vector<Row> rows;
+      std::vector<Our_call> calls;
+      for(const Named_strategy& st : repair_strategies) {
+        Row row = new_row("deleted", percent(fraction) + " of faces, " + st.name);
+        row.strategy = st.name;
+        row.repair_details = true;
+        row.deleted = (long long)(all.size() - faces.size());
+        rows.push_back(row);
+        const DFP::Strategy strategy = st.strategy;
+        calls.push_back([&points, &faces, strategy](DFP::Statistics& stats, Signature& s) {
+          return time_prediction(points, faces, stats, s, DFP::parameters::strategy(strategy));
+        });
+      }
+      std::vector<Row*> row_pointers;
+      for(Row& row : rows)
+        row_pointers.push_back(&row);
+      measure_all(reps, row_pointers, [&](Signature& s) { return time_cgal(points, s); }, calls);
+      for(const Row& row : rows)
+        report.add(row);
+    }
+  }
 }
 
 } // namespace
@@ -669,6 +919,9 @@ int main(int argc, char** argv)
     dists += (dists.empty() ? "" : ",") + d;
   for(const auto& c : o.cases)
     cases += (cases.empty() ? "" : ",") + c;
+  std::string noises;
+  for(const auto& d : o.noises)
+    noises += (noises.empty() ? "" : ",") + d;
 
   std::ostringstream header;
   header << "Delaunay_from_prediction benchmark, " << date << "\n"
@@ -685,10 +938,21 @@ int main(int argc, char** argv)
          << "memory:   peak bytes held through a counting global operator new/delete (malloc_usable_size)\n"
          << "          during the call, minus those held when it started: result included, inputs excluded\n"
          << "ratio:    median CGAL from-scratch time / median ours (> 1: we are faster). CGAL: range\n"
-         << "          insert of the same points (hilbert: the sorted points; move: the moved points),\n"
-         << "          its repetitions interleaved with ours. path: predict = prediction used, FALLBACK =\n"
-         << "          built from scratch. D_local: predicted edges not locally Delaunay. flips: flips made.\n"
-         << "check:    every result of ours vs CGAL's: counts + hash of the face set (untimed)\n";
+         << "          insert of the same points (hilbert: the sorted points; move, kinetic: the moved\n"
+         << "          points), its repetitions interleaved with ours. path: predict = prediction used,\n"
+         << "          FALLBACK = built from scratch, repair = used after local repair (faces carved or\n"
+         << "          holes refilled). D_local: predicted edges not locally Delaunay. flips: flips made.\n";
+  if(o.wants("kinetic") || o.wants("deleted"))
+    header << "repair:   kinetic and deleted time strategy carve and strategy flips (no local repair) in\n"
+           << "          the same repetitions, against the same CGAL times. Second line: the damage\n"
+           << "          before the call and the call's statistics; us/reinserted pt = median time of the\n"
+           << "          whole call / points reinserted (an upper bound of the cost per point).\n";
+  if(o.wants("kinetic"))
+    header << "kinetic:  ours: make_delaunay() on a DT<Epick> with vertex info (point index) whose points\n"
+           << "          moved by " << noises << " noise of scale sigma x sqrt(bounding box area / n);\n"
+           << "          each repetition copies the moved DT (untimed). inverted/flat: finite faces of\n"
+           << "          the moved DT that are clockwise or flat.\n";
+  header << "check:    every result of ours vs CGAL's: counts + hash of the face set (untimed)\n";
   std::printf("%s\n", header.str().c_str());
   Report report(o.csv);
   if(report.csv()) {
@@ -699,7 +963,8 @@ int main(int argc, char** argv)
     report.csv() << "dist,n,case,param,reps,cgal_s,ours_s,ratio,cgal_all_s,ours_all_s,fell_back,"
                     "fallback_reason,flips,faces_in,faces_certified,points_reinserted,edges_tested,"
                     "edges_not_locally_delaunay,points_unused,cgal_peak_bytes,ours_peak_bytes,"
-                    "mem_ratio_ours_over_cgal,check\n";
+                    "mem_ratio_ours_over_cgal,check,strategy,inverted_faces_before,flat_faces_before,"
+                    "faces_deleted,faces_carved,holes_refilled,carve_rounds,us_per_reinserted_point\n";
   }
   report.table_header();
 

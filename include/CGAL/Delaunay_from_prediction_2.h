@@ -18,6 +18,7 @@
 
 #include <CGAL/Delaunay_from_prediction/Statistics.h>
 #include <CGAL/Delaunay_from_prediction/parameters.h>
+#include <CGAL/Delaunay_from_prediction/internal/carve_repair.h>
 #include <CGAL/Delaunay_from_prediction/internal/hull_repair.h>
 #include <CGAL/Delaunay_from_prediction/internal/import_prediction.h>
 #include <CGAL/Delaunay_from_prediction/internal/input_check.h>
@@ -30,7 +31,10 @@
 #include <algorithm>
 #include <cstddef>
 #include <cstdint>
+#include <cstring>
 #include <iterator>
+#include <memory>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -40,15 +44,18 @@ namespace Delaunay_from_prediction {
 namespace internal {
 
 // Default flip budget. Lawson's algorithm needs about as many flips as the prediction has
-// wrong edges. A flip with its re-tests costs about half a point insertion of a rebuild
-// (measured: ~300 ns against ~600 ns per point at 1e5-1e6 points), so n/2 wasted flips add
-// at most about a quarter of a rebuild; a prediction that needs more (a plain
-// Triangulation_2 of random points needs ~6n) is cheaper to rebuild.
-inline std::size_t default_max_flips(std::size_t n) { return n / 2 + 64; }
+// wrong edges, and falls back at once when the failing edges alone exceed the budget. A flip
+// with its re-tests costs about 0.4 of a point insertion of a rebuild (measured: 0.42 us per
+// flip against about 1 us per point at 1e6 points), so 3n/4 wasted flips add at most about
+// 0.3 of a rebuild; moves of 0.1 spacing need 0.44n (1e6 points) to 0.5n (5000 points), a
+// plain Triangulation_2 of random points ~6n, which is cheaper to rebuild.
+inline std::size_t default_max_flips(std::size_t n) { return 3 * n / 4 + 64; }
 
 // Statistics::fallback_reason when Lawson's algorithm would need, or needed, more flips than
 // the budget.
 constexpr const char* flip_budget_exhausted = "the flip budget was exhausted";
+// Statistics::fallback_reason for Strategy::rebuild.
+constexpr const char* rebuild_requested = "the rebuild strategy was chosen";
 
 // The addresses of the objects behind `handles`, sorted, without repeats.
 template <class Handle>
@@ -73,6 +80,144 @@ std::size_t count_distinct(const std::vector<Face_handle>& faces,
   for(const void* a : addresses)
     count += std::binary_search(except.begin(), except.end(), a) ? 0 : 1;
   return count;
+}
+
+// Limits of the local repair for `n` points. Measured at 1e6 points (moves of 0.1 spacing:
+// 4.6% of the faces inverted, 0.19 n faces carved), the repair as a whole cost about a
+// rebuild, the planning alone about 1.5 us per carved face; past n/8 carved faces a rebuild is
+// cheaper.
+inline Carve_limits default_carve_limits(std::size_t n)
+{
+  Carve_limits limits;
+  limits.max_removed_faces = n / 8 + 64;
+  limits.max_bad_faces = n / 16 + 16;
+  return limits;
+}
+
+// Whether two of `tr`'s finite vertices, one of them in `candidates`, are at the same point.
+// Coordinates that are doubles are compared bit for bit through a hash table of the
+// candidates (one pass over the vertices, a few ns each); other number types by an exact
+// binary search among the sorted candidates.
+template <class Triangulation>
+bool has_duplicate_of(const Triangulation& tr,
+                      const std::vector<typename Triangulation::Vertex_handle>& candidates)
+{
+  using Point = typename Triangulation::Point;
+  if(candidates.empty())
+    return false;
+  if constexpr(std::is_same<std::decay_t<decltype(CGAL::to_double(std::declval<Point>().x()))>, double>::value &&
+               std::is_same<std::decay_t<decltype(std::declval<Point>().x())>, double>::value) {
+    auto bits = [](double x) {
+      x = (x == 0) ? 0.0 : x; // -0 == +0
+      std::uint64_t b;
+      std::memcpy(&b, &x, sizeof b);
+      return b;
+    };
+    std::size_t size = 64;
+    while(size < 4 * candidates.size())
+      size <<= 1;
+    struct Slot { std::uint64_t x, y; const void* v; };
+    std::vector<Slot> table(size, Slot{0, 0, nullptr});
+    auto slot_of = [&](std::uint64_t x, std::uint64_t y) {
+      std::size_t i = std::size_t((x * 0x9E3779B97F4A7C15ull) ^ (y * 0xC2B2AE3D27D4EB4Full)) & (size - 1);
+      while(table[i].v != nullptr && (table[i].x != x || table[i].y != y))
+        i = (i + 1) & (size - 1);
+      return i;
+    };
+    for(const auto& v : candidates) {
+      const std::uint64_t x = bits(v->point().x()), y = bits(v->point().y());
+      Slot& s = table[slot_of(x, y)];
+      if(s.v != nullptr)
+        return true;
+      s = Slot{x, y, &*v};
+    }
+    for(auto v = tr.finite_vertices_begin(); v != tr.finite_vertices_end(); ++v) {
+      const std::uint64_t x = bits(v->point().x()), y = bits(v->point().y());
+      const Slot& s = table[slot_of(x, y)];
+      if(s.v != nullptr && s.v != &*v)
+        return true;
+    }
+    return false;
+  } else {
+    auto less = [&](const Point& a, const Point& b) { return tr.geom_traits().compare_xy_2_object()(a, b) == SMALLER; };
+    std::vector<std::pair<Point, const void*>> sorted;
+    for(const auto& v : candidates)
+      sorted.emplace_back(v->point(), &*v);
+    std::sort(sorted.begin(), sorted.end(), [&](const auto& a, const auto& b) { return less(a.first, b.first); });
+    for(std::size_t k = 1; k < sorted.size(); ++k)
+      if(!less(sorted[k - 1].first, sorted[k].first))
+        return true;
+    for(auto v = tr.finite_vertices_begin(); v != tr.finite_vertices_end(); ++v) {
+      const auto it = std::lower_bound(sorted.begin(), sorted.end(), v->point(),
+                                       [&](const auto& a, const Point& p) { return less(a.first, p); });
+      if(it != sorted.end() && !less(v->point(), it->first) && it->second != &*v)
+        return true;
+    }
+    return false;
+  }
+}
+
+// make_delaunay's local repair of a triangulation with faces that are not counterclockwise
+// (`bad`): carves the stars of their vertices, fills the holes, reinserts those vertices
+// (same objects), then flips. Returns null on success; otherwise why not, with `tr` either
+// as it was (the carve did not fit the budget, or the result would not be a triangulation:
+// rolled back) or a valid triangulation of the same vertices (the flip budget ran out).
+// Never throws for duplicates: it returns first, and the caller's rebuild names them.
+template <class Triangulation>
+const char* carve_in_place(Triangulation& tr, const std::vector<typename Triangulation::Face_handle>& bad,
+                           std::vector<std::pair<typename Triangulation::Face_handle, int>>& stack,
+                           std::vector<typename Triangulation::Face_handle>& touched,
+                           std::size_t max_flips, Statistics& stats)
+{
+  using Face_handle = typename Triangulation::Face_handle;
+  Carve_repair<Triangulation> carve(tr, true);
+  // A face inverted by moves usually has one vertex that crossed the opposite edge, the
+  // longest one: carving that vertex's star leaves a simple hole (its old link) in most
+  // cases, at a third of the faces of carving all three stars. Holes that are not simple are
+  // widened by the rounds of plan(). Only the amount carved depends on this choice.
+  for(const Face_handle f : bad) {
+    int crossing = 0;
+    double longest = -1;
+    for(int i = 0; i < 3; ++i) {
+      const auto& p = f->vertex(ccw(i))->point();
+      const auto& q = f->vertex(cw(i))->point();
+      const double dx = CGAL::to_double(p.x()) - CGAL::to_double(q.x());
+      const double dy = CGAL::to_double(p.y()) - CGAL::to_double(q.y());
+      if(dx * dx + dy * dy > longest) {
+        longest = dx * dx + dy * dy;
+        crossing = i;
+      }
+    }
+    carve.carve_star(f->vertex(crossing));
+  }
+  const char* why = carve.plan(default_carve_limits(tr.number_of_vertices()));
+  stats.carve_rounds = carve.rounds();
+  if(why != nullptr)
+    return why;
+  if(has_duplicate_of(tr, carve.detached()))
+    return "two vertices are at the same point";
+  carve.commit(stack);
+  if(!carve.finish_hull(stack, stats.flips)) {
+    carve.rollback();
+    return "the kept faces and the filled holes do not form a triangulation";
+  }
+  std::vector<const void*> modified;
+  carve.reinsert(stack, modified, [](auto, auto) {
+    CGAL_assertion_msg(false, "duplicates were ruled out before the carve");
+  });
+  stats.faces_carved = carve.faces_removed();
+  stats.holes_refilled = carve.holes();
+  stats.points_reinserted = carve.detached().size();
+  const std::size_t untangled = touched.size(); // faces flipped before the carve
+  if(!lawson_flip(tr, stack, max_flips, stats.flips, touched))
+    return flip_budget_exhausted;
+  for(std::size_t k = 0; k < touched.size(); ++k)
+    if(k < untangled ? !carve.is_removed(touched[k]) : !carve.is_created(&*touched[k]))
+      modified.push_back(&*touched[k]);
+  std::sort(modified.begin(), modified.end());
+  modified.erase(std::unique(modified.begin(), modified.end()), modified.end());
+  stats.faces_certified = stats.faces_in - stats.faces_carved - modified.size();
+  return nullptr;
 }
 
 } // namespace internal
@@ -108,7 +253,7 @@ or repeated faces, holes) is not an error but makes the call build from scratch
       with a from-scratch build, so that its cost stays close to a rebuild even for a bad
       prediction or an inexact kernel that could make Lawson's algorithm cycle}
     \cgalParamType{`std::size_t`}
-    \cgalParamDefault{half the number of points, plus 64}
+    \cgalParamDefault{three quarters of the number of points, plus 64}
   \cgalParamNEnd
   \cgalParamNBegin{screen_prediction}
     \cgalParamDescription{whether to draw 32 faces and 16 points at random first, and to build
@@ -142,6 +287,8 @@ Statistics delaunay_from_prediction(const PointRange& points, const FaceRange& f
   const std::size_t max_flips = choose_parameter(get_parameter(np, internal_np::max_flips),
                                                  internal::default_max_flips(n));
   const bool screen = choose_parameter(get_parameter(np, internal_np::screen_prediction), true);
+  const Strategy strategy = choose_parameter(get_parameter(np, internal_np::strategy), Strategy::automatic);
+  const bool carve = strategy == Strategy::automatic || strategy == Strategy::carve;
   const auto& gt = dt.geom_traits();
 
   // Check, then import and certify into a fresh triangulation (Invalid_prediction is thrown
@@ -149,13 +296,19 @@ Statistics delaunay_from_prediction(const PointRange& points, const FaceRange& f
   internal::check_points_are_finite(point_at, n);
   DT result(gt);
   internal::Imported_prediction<DT> imported;
-  if(screen && internal::fails_sampling_screen(gt, point_at, n, faces, number_of_faces)) {
+  auto read_all_faces = [&] {
     std::size_t k = 0, idx[3];
     for(const auto& face : faces)
       internal::read_face(face, k++, n, idx);
+  };
+  if(strategy == Strategy::rebuild) {
+    read_all_faces();
+    imported.failure = internal::rebuild_requested;
+  } else if(screen && internal::fails_sampling_screen(gt, point_at, n, faces, number_of_faces)) {
+    read_all_faces();
     imported.failure = "most sampled faces have sampled points inside their circumcircles";
   } else {
-    internal::Prediction_importer<DT>::run(result, point_at, n, faces, number_of_faces, imported);
+    internal::Prediction_importer<DT>::run(result, point_at, n, faces, number_of_faces, imported, carve);
   }
 
   auto build_from_scratch = [&](const char* why) {
@@ -175,27 +328,69 @@ Statistics delaunay_from_prediction(const PointRange& points, const FaceRange& f
     return build_from_scratch(imported.failure);
   stats.edges_tested = imported.edges_tested;
   stats.edges_not_locally_delaunay = imported.not_locally_delaunay.size();
+  stats.faces_carved = imported.faces_dropped;
 
   // Repair. Each failing edge is not Delaunay and a flip removes one edge, so Lawson's
   // algorithm needs at least as many flips as there are failing edges: past the budget, the
   // flips would be wasted.
   if(imported.not_locally_delaunay.size() > max_flips)
     return build_from_scratch(internal::flip_budget_exhausted);
+  std::vector<std::pair<Face_handle, int>>& stack = imported.not_locally_delaunay;
+  std::vector<const void*> modified; // predicted faces changed by the repair
+  std::unique_ptr<internal::Carve_repair<DT>> repair;
+  if(imported.needs_repair) {
+    // The faces kept are not a triangulation with a convex hull: fill the holes and close
+    // the hull (carve_repair.h); vertices left without a face are reinserted.
+    repair.reset(new internal::Carve_repair<DT>(result, false));
+    repair->expect_outer_cycle();
+    if(imported.faces_dropped > 0)
+      repair->expect_several_fans();
+    internal::carve_vertices_wound_twice(result, *repair);
+    for(const auto& e : imported.open_halfedges)
+      repair->add_open_halfedge(e.first, e.second);
+    const char* why = repair->plan(internal::default_carve_limits(n));
+    stats.carve_rounds = repair->rounds();
+    if(why != nullptr)
+      return build_from_scratch(why);
+#ifdef DFP_DEBUG
+    debug_check(result, "after import");
+#endif
+    repair->commit(stack);
+#ifdef DFP_DEBUG
+    debug_check(result, "after commit");
+#endif
+    if(!repair->finish_hull(stack, stats.flips))
+      return build_from_scratch("the kept faces and the filled holes do not form a triangulation");
+    std::size_t duplicates = 0;
+    repair->reinsert(stack, modified, [&](Vertex_handle v, Vertex_handle same) {
+      internal::merge_index_info_of(same, v);
+      result.tds().delete_vertex(v);
+      ++duplicates;
+    });
+    stats.faces_carved += repair->faces_removed();
+    stats.holes_refilled = repair->holes();
+    stats.points_reinserted = repair->detached().size();
+    stats.duplicate_points += duplicates;
+  }
   std::vector<Face_handle> touched;
-  if(!internal::lawson_flip(result, imported.not_locally_delaunay, max_flips, stats.flips, touched))
+  if(!internal::lawson_flip(result, stack, max_flips, stats.flips, touched))
     return build_from_scratch(internal::flip_budget_exhausted);
 
   // Points no face uses: duplicates of vertices, or points to insert.
   std::vector<std::size_t>& unused = imported.unused_points;
   stats.points_unused = unused.size();
-  if(unused.empty()) {
+  if(unused.empty() && !repair) {
     stats.faces_certified = result.number_of_faces() - internal::count_distinct(touched);
   } else {
-    // A predicted face survives the insertions if it was never flipped and has no new
-    // vertex (insertion recycles the faces it destroys for faces around the new vertex).
-    const std::vector<const void*> modified = internal::sorted_addresses(touched);
+    // A predicted face survives if it was never flipped, is not one the repair made, and has
+    // no new vertex (insertion recycles the faces it destroys for faces around the new
+    // vertex).
+    for(const Face_handle f : touched)
+      modified.push_back(&*f);
+    std::sort(modified.begin(), modified.end());
     std::vector<const void*> new_vertices;
-    internal::insert_points(result, point_at, unused, stats, &new_vertices);
+    if(!unused.empty())
+      internal::insert_points(result, point_at, unused, stats, &new_vertices);
     std::sort(new_vertices.begin(), new_vertices.end());
     auto is_new = [&](const Vertex_handle v) {
       return std::binary_search(new_vertices.begin(), new_vertices.end(), static_cast<const void*>(&*v));
@@ -203,7 +398,8 @@ Statistics delaunay_from_prediction(const PointRange& points, const FaceRange& f
     stats.faces_certified = 0;
     for(auto f = result.finite_faces_begin(); f != result.finite_faces_end(); ++f)
       if(!std::binary_search(modified.begin(), modified.end(), static_cast<const void*>(&*f)) &&
-         !is_new(f->vertex(0)) && !is_new(f->vertex(1)) && !is_new(f->vertex(2)))
+         !(repair && repair->is_created(&*f)) && !is_new(f->vertex(0)) && !is_new(f->vertex(1)) &&
+         !is_new(f->vertex(2)))
         ++stats.faces_certified;
   }
   dt.swap(result);
@@ -233,7 +429,7 @@ its faces are rebuilt around the same vertex objects (`Statistics::fell_back`).
     \cgalParamDescription{the largest number of edge flips to make; past it the faces are
       rebuilt}
     \cgalParamType{`std::size_t`}
-    \cgalParamDefault{half the number of vertices, plus 64}
+    \cgalParamDefault{three quarters of the number of vertices, plus 64}
   \cgalParamNEnd
 \cgalNamedParamsEnd
 
@@ -246,36 +442,63 @@ Statistics make_delaunay(Triangulation& tr, const NamedParameters& np = paramete
 {
   using parameters::choose_parameter;
   using parameters::get_parameter;
+  using Vertex_handle = typename Triangulation::Vertex_handle;
   using Face_handle = typename Triangulation::Face_handle;
 
   Statistics stats;
   stats.faces_in = tr.dimension() == 2 ? tr.number_of_faces() : 0;
   const std::size_t max_flips = choose_parameter(get_parameter(np, internal_np::max_flips),
                                                  internal::default_max_flips(tr.number_of_vertices()));
+  const Strategy strategy = choose_parameter(get_parameter(np, internal_np::strategy), Strategy::automatic);
   if(tr.number_of_vertices() == 0)
     return stats;
 
+  const bool carve = strategy == Strategy::automatic || strategy == Strategy::carve;
   std::vector<std::pair<Face_handle, int>> stack;
+  std::vector<Face_handle> bad;
   bool hull_is_convex = false;
-  const char* why = internal::certify_triangulation(tr, stack, stats.edges_tested, hull_is_convex);
+  const std::size_t max_bad = internal::default_carve_limits(tr.number_of_vertices()).max_bad_faces;
+  const char* why = strategy == Strategy::rebuild
+                        ? internal::rebuild_requested
+                        : internal::certify_triangulation(tr, stack, stats.edges_tested, hull_is_convex,
+                                                          carve ? &bad : nullptr, max_bad);
   if(why == nullptr)
     stats.edges_not_locally_delaunay = stack.size();
+  // Lawson needs at least a flip per failing edge: past the budget, the flips are wasted.
+  if(why == nullptr && stats.edges_not_locally_delaunay > max_flips)
+    why = internal::flip_budget_exhausted;
+  // Faces that are not ccw: first untangled by flips, then the rest carved (carve_repair.h).
+  // Until the triangulation is certified again, a failure undoes the flips, so that a
+  // rebuild that finds two vertices at the same point leaves `tr` as it was.
+  std::vector<std::pair<Vertex_handle, Vertex_handle>> untangled;
+  std::vector<Face_handle> touched;
+  if(why == nullptr && !bad.empty()) {
+    internal::untangle_by_flips(tr, bad, stack, untangled, touched);
+    stats.flips += untangled.size();
+    if(!bad.empty()) {
+      why = internal::carve_in_place(tr, bad, stack, touched, max_flips, stats);
+      if(why == nullptr)
+        return stats;
+    }
+  }
   std::vector<const void*> hull_faces; // finite faces made by convexify_hull
   if(why == nullptr && !hull_is_convex &&
      !internal::convexify_hull(tr, stack, hull_faces, stats.flips))
     why = "the hull is not a convex polygon wound once, and no flip of hull edges makes it one";
-  if(why == nullptr && hull_is_convex && stats.edges_not_locally_delaunay > max_flips)
-    why = internal::flip_budget_exhausted; // at least one flip per failing edge: see above
   if(why == nullptr) {
-    std::vector<Face_handle> touched;
     if(internal::lawson_flip(tr, stack, max_flips, stats.flips, touched)) {
       stats.faces_certified = stats.faces_in - internal::count_distinct(touched, hull_faces);
       return stats;
     }
     why = internal::flip_budget_exhausted;
+    untangled.clear(); // a triangulation again: no duplicates, nothing to undo
   }
+  if(!untangled.empty() && why != internal::flip_budget_exhausted)
+    internal::undo_untangling(tr, untangled);
   stats.fell_back = true;
   stats.fallback_reason = why;
+  stats.faces_certified = 0;
+  stats.points_reinserted = 0;
   internal::rebuild_keeping_vertices(tr, stats);
   return stats;
 }

@@ -28,12 +28,13 @@ struct Degenerate_test
 
   CGAL::Random rng{31337};
 
-  template <class DT>
-  DFP::Statistics run(const Points& points, const Faces& faces)
+  template <class DT, class NP = DFP::parameters::Default_named_parameters>
+  DFP::Statistics run(const Points& points, const Faces& faces,
+                      const NP& np = DFP::parameters::default_values())
   {
     DT dt;
     dt.insert(make_point<K>(-7., 3.)); // must be cleared
-    const DFP::Statistics s = DFP::delaunay_from_prediction(points, faces, dt);
+    const DFP::Statistics s = DFP::delaunay_from_prediction(points, faces, dt, np);
     check_is_cgal_delaunay(dt, points);
     check_statistics(s, faces, points, dt);
     return s;
@@ -104,9 +105,14 @@ struct Degenerate_test
       run<DT>(points, random_triples(n, n, rng));
     }
     {
-      Scope s("no faces");
-      const DFP::Statistics st = run<DT>(points, Faces());
+      Scope s("no faces, strategy(flips)");
+      const DFP::Statistics st = run<DT>(points, Faces(), DFP::parameters::strategy(DFP::Strategy::flips));
       DFP_CHECK(st.fell_back);
+    }
+    {
+      Scope s("no faces, default strategy");
+      const DFP::Statistics st = run<DT>(points, Faces());
+      DFP_CHECK(st.faces_certified == 0);
     }
   }
 

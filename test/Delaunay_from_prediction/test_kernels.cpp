@@ -102,8 +102,12 @@ struct Kernel_test
       run<DT>(points, random_triples(n, n, rng));
     }
     {
-      Scope s("no faces");
-      DFP_CHECK(run<DT>(points, Faces()).fell_back);
+      Scope s("no faces, strategy(flips)");
+      DFP_CHECK(run<DT>(points, Faces(), true, DFP::parameters::strategy(DFP::Strategy::flips)).fell_back);
+    }
+    {
+      Scope s("no faces, default strategy");
+      DFP_CHECK(run<DT>(points, Faces()).faces_certified == 0);
     }
     {
       Scope s("the DT of half the points");
@@ -122,13 +126,17 @@ struct Kernel_test
     build(tr, points, handles);
     const std::size_t n = points.size();
     const double spacing = 1. / std::sqrt(double(n));
-    auto step = [&](const char* what) {
+    auto step = [&](const char* what, DFP::Strategy strategy = DFP::Strategy::automatic) {
       Scope s(what);
       const Points now = current_points(handles);
-      const DFP::Statistics st = DFP::make_delaunay(tr);
+      const DFP::Statistics st = DFP::make_delaunay(tr, DFP::parameters::strategy(strategy));
       check_handles(tr, handles, now);
       check_is_cgal_delaunay(tr, now);
       return st;
+    };
+    auto mirror = [&] {
+      for(const auto& v : handles)
+        v->set_point(make_point<K>(-CGAL::to_double(v->point().x()), CGAL::to_double(v->point().y())));
     };
     step("initial");
     move_keeping_faces_ccw(tr, handles, 0.03 * spacing, rng);
@@ -138,9 +146,14 @@ struct Kernel_test
                                  CGAL::to_double(v->point().y()) + rng.get_double(-2., 2.) * spacing));
     DFP_CHECK(inverted_faces(tr) > 0);
     step("large moves");
-    for(const auto& v : handles)
-      v->set_point(make_point<K>(-CGAL::to_double(v->point().x()), CGAL::to_double(v->point().y())));
-    DFP_CHECK(step("mirrored").fell_back);
+    // The mirror image of a DT has every face inverted: mirrored, then mirrored back.
+    mirror();
+    DFP_CHECK(inverted_faces(tr) == tr.number_of_faces());
+    DFP_CHECK(step("mirrored, strategy(flips)", DFP::Strategy::flips).fell_back);
+    mirror();
+    DFP_CHECK(inverted_faces(tr) == tr.number_of_faces());
+    const DFP::Statistics st = step("mirrored back, default strategy");
+    DFP_CHECK(st.fell_back || st.faces_carved > 0);
   }
 
   void cocircular()

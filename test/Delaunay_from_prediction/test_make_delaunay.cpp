@@ -4,8 +4,9 @@
 //
 // make_delaunay() on Delaunay_triangulation_2 and Triangulation_2, with and without vertex
 // info (Epick), through a sequence of "time steps" that move the vertices with set_point():
-// no move, small moves that keep every face ccw, large moves that invert faces, a shear, a
-// mirror image, collapse onto a line and back. After every call the triangulation must be
+// no move, small moves that keep every face ccw, a shear, a few vertices moved far (a few
+// inverted faces: local repair, or a fallback with strategy(flips)), large moves that invert
+// many faces, a mirror image, collapse onto a line and back. After every call the triangulation must be
 // CGAL's DT of the moved points, every original vertex handle still in it with its point and
 // info. Then lower dimensions (0 to 3 vertices), and two vertices at the same point: throws
 // Invalid_prediction naming both, and leaves the triangulation as it was.
@@ -24,25 +25,47 @@ using Point = K::Point_2;
 using Points = std::vector<Point>;
 
 // Calls make_delaunay and checks everything that must hold afterwards.
+//
+// Faces that are not ccw (inverted or flat) are untangled by flips or carved by the local
+// repair (their vertices reinserted) unless the strategy is `flips`, or the damage is over the
+// repair's budget: then the call falls back. A triangulation whose faces are all ccw is never
+// carved.
 template <class Tr, class NP = DFP::parameters::Default_named_parameters>
 DFP::Statistics make_and_check(Tr& tr, const Handles<Tr>& handles,
                                const NP& np = DFP::parameters::default_values())
 {
   const Points points = current_points(handles);
   const std::size_t faces_before = tr.dimension() == 2 ? tr.number_of_faces() : 0;
+  const std::size_t inverted = inverted_faces(tr);
   const DFP::Statistics s = DFP::make_delaunay(tr, np);
   check_handles(tr, handles, points);
   check_is_cgal_delaunay(tr, points); // info i is point i: also checks the info
   DFP_CHECK_MSG(s.faces_in == faces_before, s.faces_in << " vs " << faces_before);
   DFP_CHECK(s.faces_certified <= s.faces_in);
   DFP_CHECK_MSG(std::string(s.fallback_reason).empty() == !s.fell_back, s.fallback_reason);
+  DFP_CHECK_MSG(inverted > 0 || (s.faces_carved == 0 && s.holes_refilled == 0 && s.carve_rounds == 0),
+                s.faces_carved << " faces carved, " << s.holes_refilled << " holes refilled, "
+                               << s.carve_rounds << " rounds, with every face ccw");
   if(s.fell_back) {
     DFP_CHECK(s.points_reinserted == points.size());
   } else {
-    DFP_CHECK(s.points_reinserted == 0);
     DFP_CHECK(s.edges_not_locally_delaunay <= s.edges_tested);
-    DFP_CHECK((s.flips == 0) == (s.edges_not_locally_delaunay == 0));
-    DFP_CHECK(s.faces_certified + 2 * s.flips >= s.faces_in);
+    DFP_CHECK_MSG(s.faces_certified + s.faces_carved <= s.faces_in,
+                  s.faces_certified << " certified, " << s.faces_carved << " carved, " << s.faces_in << " in");
+    // Inverted faces were untangled by flips or carved.
+    DFP_CHECK(inverted == 0 || s.flips > 0 || s.faces_carved > 0);
+    if(s.faces_carved == 0) {
+      DFP_CHECK_MSG(s.points_reinserted == 0, s.points_reinserted << " reinserted, nothing carved");
+    } else {
+      // The carved vertices, each reinserted once.
+      DFP_CHECK_MSG(s.points_reinserted > 0 && s.points_reinserted <= points.size() &&
+                        s.points_reinserted <= 3 * s.faces_carved,
+                    s.points_reinserted << " reinserted, " << s.faces_carved << " faces carved");
+    }
+    if(inverted == 0) {
+      DFP_CHECK((s.flips == 0) == (s.edges_not_locally_delaunay == 0));
+      DFP_CHECK(s.faces_certified + 2 * s.flips >= s.faces_in);
+    }
   }
   return s;
 }
@@ -143,6 +166,24 @@ void test_time_steps(const char* name, CGAL::Random& rng)
     DFP_CHECK_MSG(!s.fell_back, s.fallback_reason);
     DFP_CHECK(s.flips > 0);
   }
+  for(const bool flips : {true, false}) {
+    // A few faces inverted: the local repair carves around them, or untangles them by flips
+    // (strategy(flips): any inverted face makes the call fall back).
+    Scope step("a few vertices moved by 3 spacings, ", flips ? "strategy(flips)" : "default strategy");
+    CGAL::Random local(flips ? 91 : 92); // leaves rng, and so the other steps, as they were
+    for(int moved = 0; moved < 100 && (moved < 3 || inverted_faces(tr) == 0); ++moved) {
+      const auto v = handles[std::size_t(local.get_int(0, int(n)))];
+      v->set_point(Point(v->point().x() + local.get_double(-3., 3.) * spacing,
+                         v->point().y() + local.get_double(-3., 3.) * spacing));
+    }
+    DFP_CHECK(inverted_faces(tr) > 0);
+    if(flips) {
+      const DFP::Statistics s = make_and_check(tr, handles, DFP::parameters::strategy(DFP::Strategy::flips));
+      DFP_CHECK(s.fell_back);
+    } else {
+      make_and_check(tr, handles);
+    }
+  }
   {
     Scope step("large moves (2 spacings) inverting faces");
     move_all<Tr>(handles, [&](const Point& p) {
@@ -152,11 +193,22 @@ void test_time_steps(const char* name, CGAL::Random& rng)
     make_and_check(tr, handles);
   }
   {
+    // Mirrored twice: the mirror image of a DT has every face inverted.
     Scope step("mirror image x -> -x (every face inverted)");
     move_all<Tr>(handles, [](const Point& p) { return Point(-p.x(), p.y()); });
     DFP_CHECK(inverted_faces(tr) == tr.number_of_faces());
-    const DFP::Statistics s = make_and_check(tr, handles);
-    DFP_CHECK(s.fell_back);
+    {
+      Scope flips("strategy(flips): falls back");
+      const DFP::Statistics s = make_and_check(tr, handles, DFP::parameters::strategy(DFP::Strategy::flips));
+      DFP_CHECK(s.fell_back);
+    }
+    move_all<Tr>(handles, [](const Point& p) { return Point(-p.x(), p.y()); });
+    DFP_CHECK(inverted_faces(tr) == tr.number_of_faces());
+    {
+      Scope automatic("mirrored back, default strategy");
+      const DFP::Statistics s = make_and_check(tr, handles);
+      DFP_CHECK(s.fell_back || s.faces_carved > 0);
+    }
   }
   {
     Scope step("all points moved onto a line (dimension 2 -> 1)");
@@ -287,22 +339,29 @@ void test_small_dimensions(const char* name, CGAL::Random& rng)
     Scope c("fan of a pentagon, hull moved to wind twice");
     const Points pentagon = {Point(1000, 0), Point(309, 951), Point(-809, 588), Point(-809, -588),
                              Point(309, -951)};
-    Tr tr;
-    Handles<Tr> handles;
-    Points points = pentagon;
-    points.push_back(Point(0, 0));
-    build(tr, points, handles);
-    make_and_check(tr, handles);
-    const auto centre = handles[5];
-    DFP_CHECK(tr.degree(centre) == 5);
-    auto w = tr.incident_vertices(centre), done = w;
-    std::size_t k = 0;
-    do
-      w->set_point(pentagon[(2 * k++) % 5]);
-    while(++w != done);
-    DFP_CHECK(inverted_faces(tr) == 0);
-    const DFP::Statistics s = make_and_check(tr, handles);
-    DFP_CHECK(s.fell_back);
+    for(const bool flips : {true, false}) {
+      Scope strategy(flips ? "strategy(flips)" : "default strategy");
+      Tr tr;
+      Handles<Tr> handles;
+      Points points = pentagon;
+      points.push_back(Point(0, 0));
+      build(tr, points, handles);
+      make_and_check(tr, handles);
+      const auto centre = handles[5];
+      DFP_CHECK(tr.degree(centre) == 5);
+      auto w = tr.incident_vertices(centre), done = w;
+      std::size_t k = 0;
+      do
+        w->set_point(pentagon[(2 * k++) % 5]);
+      while(++w != done);
+      DFP_CHECK(inverted_faces(tr) == 0);
+      if(flips) {
+        const DFP::Statistics s = make_and_check(tr, handles, DFP::parameters::strategy(DFP::Strategy::flips));
+        DFP_CHECK(s.fell_back);
+      } else {
+        make_and_check(tr, handles);
+      }
+    }
   }
   {
     Scope c("collinear points, a few moved off their line");

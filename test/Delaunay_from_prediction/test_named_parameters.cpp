@@ -6,7 +6,8 @@
 // succeeds with max_flips(f) and falls back with max_flips(f - 1), the result exact either
 // way), max_flips(0) forces a fallback, for delaunay_from_prediction() and make_delaunay();
 // screen_prediction(bool): good predictions pass the sampling screen at n >= 4096, random
-// triples at n >= 5000 fall back with it and without it; chaining with CGAL's parameters.
+// triples at n >= 5000 are rejected by it, and fall back without it with strategy(flips) (the
+// default strategy may repair them locally instead); chaining with CGAL's parameters.
 
 #include <CGAL/Delaunay_from_prediction_2.h> // first: the header is self-contained
 
@@ -199,17 +200,32 @@ void test_screen(CGAL::Random& rng)
               NP::screen_prediction(screen));
       DFP_CHECK_MSG(!st.fell_back, st.fallback_reason);
     }
+    // With the local repair (the default strategy), random triples may be repaired rather
+    // than rebuilt if the budgets allow it; with strategy(flips) they always fall back.
     {
       Scope c("random triples");
-      const DFP::Statistics st = run(points, random_triples(n, 2 * n, rng), NP::screen_prediction(screen));
+      const Faces triples = random_triples(n, 2 * n, rng);
+      const DFP::Statistics st =
+          run(points, triples, NP::strategy(DFP::Strategy::flips, NP::screen_prediction(screen)));
       DFP_CHECK(st.fell_back);
+      if(screen)
+        DFP_CHECK_MSG(std::string(st.fallback_reason) ==
+                          "most sampled faces have sampled points inside their circumcircles",
+                      st.fallback_reason);
+      const DFP::Statistics automatic = run(points, triples, NP::screen_prediction(screen));
+      DFP_CHECK(repaired_or_rebuilt(automatic));
+      if(screen)
+        DFP_CHECK(automatic.fell_back);
     }
     {
       Scope c("random triples in a std::list (no random access)");
       const Faces triples = random_triples(n, 2 * n, rng);
       const std::list<Face> faces(triples.begin(), triples.end());
-      const DFP::Statistics st = run(points, faces, triples, NP::screen_prediction(screen));
+      const DFP::Statistics st =
+          run(points, faces, triples, NP::strategy(DFP::Strategy::flips, NP::screen_prediction(screen)));
       DFP_CHECK(st.fell_back);
+      const DFP::Statistics automatic = run(points, faces, triples, NP::screen_prediction(screen));
+      DFP_CHECK(repaired_or_rebuilt(automatic));
     }
   }
   {
@@ -219,7 +235,11 @@ void test_screen(CGAL::Random& rng)
     const DFP::Statistics st = DFP::delaunay_from_prediction(points, triples, dt);
     check_is_cgal_delaunay(dt, points);
     check_statistics(st, triples, points, dt);
+    // The screen (on by default) rejects random triples before any repair is tried.
     DFP_CHECK(st.fell_back);
+    DFP_CHECK_MSG(std::string(st.fallback_reason) ==
+                      "most sampled faces have sampled points inside their circumcircles",
+                  st.fallback_reason);
   }
   {
     Scope s("integer grid 70 x 70 (co-circular: on-circle points are not inside), screen on");

@@ -201,14 +201,32 @@ void test_bad_predictions(const Points& points, const XYs& xy, CGAL::Random& rng
   }
   {
     Scope scope("random triples");
-    const DFP::Statistics s = run<DT>(points, random_triples(n, 2 * n, rng));
-    DFP_CHECK(s.fell_back);
+    const Faces triples = random_triples(n, 2 * n, rng);
+    {
+      Scope flips("strategy(flips): falls back");
+      const DFP::Statistics s = run<DT>(points, triples, DFP::parameters::strategy(DFP::Strategy::flips));
+      DFP_CHECK(s.fell_back);
+    }
+    {
+      Scope automatic("default strategy: rebuilt, or repaired locally when the damage is small");
+      const DFP::Statistics s = run<DT>(points, triples);
+      DFP_CHECK(repaired_or_rebuilt(s));
+    }
   }
   {
     Scope scope("no faces");
-    const DFP::Statistics s = run<DT>(points, Faces());
-    DFP_CHECK(s.fell_back);
-    DFP_CHECK(s.faces_in == 0);
+    {
+      Scope flips("strategy(flips)");
+      const DFP::Statistics s = run<DT>(points, Faces(), DFP::parameters::strategy(DFP::Strategy::flips));
+      DFP_CHECK(s.fell_back);
+      DFP_CHECK(s.faces_in == 0);
+    }
+    {
+      Scope automatic("default strategy");
+      const DFP::Statistics s = run<DT>(points, Faces());
+      DFP_CHECK(s.faces_in == 0);
+      DFP_CHECK(s.faces_certified == 0);
+    }
   }
   {
     Scope scope("the DT listed twice");
@@ -260,8 +278,16 @@ void test_double_cover()
     faces.push_back({0, 1 + j, 1 + (j + 2) % 5});
   for(const Face& f : faces)
     DFP_CHECK(CGAL::orientation(points[f[0]], points[f[1]], points[f[2]]) == CGAL::LEFT_TURN);
-  const DFP::Statistics s = run<DT>(points, faces);
-  DFP_CHECK(s.fell_back);
+  {
+    Scope flips("strategy(flips): falls back");
+    const DFP::Statistics s = run<DT>(points, faces, DFP::parameters::strategy(DFP::Strategy::flips));
+    DFP_CHECK(s.fell_back);
+  }
+  {
+    Scope automatic("default strategy");
+    const DFP::Statistics s = run<DT>(points, faces);
+    DFP_CHECK(repaired_or_rebuilt(s));
+  }
 }
 
 // Many small predictions, each the DT with a few random local corruptions: a vertex of a

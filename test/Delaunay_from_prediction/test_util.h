@@ -507,6 +507,13 @@ inline Faces random_triples(std::size_t n, std::size_t m, CGAL::Random& rng)
   return faces;
 }
 
+// True if the statistics show that a prediction was not used as it is: rebuilt from scratch,
+// or repaired locally (faces carved, holes refilled, or at least one round of the repair).
+inline bool repaired_or_rebuilt(const DFP::Statistics& s)
+{
+  return s.fell_back || s.faces_carved > 0 || s.holes_refilled > 0 || s.carve_rounds > 0;
+}
+
 // Number of distinct indices the faces use.
 inline std::size_t used_indices(const Faces& faces)
 {
@@ -655,6 +662,13 @@ std::size_t edges_not_in_delaunay(const Faces& faces, const std::vector<typename
 }
 
 // Statistics that must hold for any call of delaunay_from_prediction.
+//
+// When the prediction is not a triangulation, the local repair may carve faces (the importer's
+// left-out faces included: degenerate ones, and faces on the same side of an edge as an
+// earlier face), refill holes and reinsert the vertices it detached, without falling back.
+// Then the relations between flips, failing edges and certified faces of a plain repair by
+// flips need not hold, and the points used by no kept face lie between those used by no face
+// and those used by no non-degenerate face, plus three per face left out for overlapping.
 template <class DT>
 void check_statistics(const DFP::Statistics& s, const Faces& faces,
                       const std::vector<typename DT::Point>& points, const DT& dt)
@@ -672,19 +686,44 @@ void check_statistics(const DFP::Statistics& s, const Faces& faces,
     DFP_CHECK_MSG(s.points_reinserted == n, s.points_reinserted << " vs " << n);
     DFP_CHECK(s.faces_certified == 0);
   } else {
+    const bool repaired = s.faces_carved > 0 || s.holes_refilled > 0 || s.carve_rounds > 0;
     DFP_CHECK(s.edges_not_locally_delaunay <= s.edges_tested);
-    DFP_CHECK((s.flips == 0) == (s.edges_not_locally_delaunay == 0));
-    DFP_CHECK_MSG(s.points_unused == n - used_indices(faces), s.points_unused);
-    DFP_CHECK(s.points_reinserted == s.points_unused);
-    if(s.points_unused == 0)
-      DFP_CHECK(s.faces_certified + 2 * s.flips >= s.faces_in);
-    if(s.points_unused == 0 && s.flips == 0)
-      DFP_CHECK(s.faces_certified == s.faces_in);
+    DFP_CHECK_MSG(s.faces_certified + s.faces_carved <= s.faces_in,
+                  s.faces_certified << " certified, " << s.faces_carved << " carved, " << s.faces_in << " in");
+    DFP_CHECK_MSG(s.carve_rounds > 0 || s.holes_refilled == 0, s.holes_refilled << " holes refilled in 0 rounds");
+    // Degenerate faces are never kept.
+    auto orientation = dt.geom_traits().orientation_2_object();
+    Faces proper;
+    for(const Face& f : faces)
+      if(orientation(points[f[0]], points[f[1]], points[f[2]]) != CGAL::COLLINEAR)
+        proper.push_back(f);
+    const std::size_t degenerate = faces.size() - proper.size();
+    DFP_CHECK_MSG(s.faces_carved >= degenerate, s.faces_carved << " carved, " << degenerate << " degenerate");
+    const std::size_t unused_lo = n - used_indices(faces), unused_hi = n - used_indices(proper);
+    const std::size_t overlapping = s.faces_carved >= degenerate ? s.faces_carved - degenerate : 0;
+    DFP_CHECK_MSG(s.points_unused >= unused_lo && s.points_unused <= unused_hi + 3 * overlapping,
+                  s.points_unused << " unused, expected " << unused_lo << " to " << unused_hi << " + 3 * "
+                                  << overlapping);
+    // The points used by no kept face, and the vertices left without a face by the carving
+    // (each a vertex of a carved face).
+    DFP_CHECK_MSG(s.points_reinserted >= s.points_unused &&
+                      s.points_reinserted <= s.points_unused + 3 * s.faces_carved,
+                  s.points_reinserted << " reinserted, " << s.points_unused << " unused, "
+                                      << s.faces_carved << " carved");
+    if(!repaired) {
+      DFP_CHECK((s.flips == 0) == (s.edges_not_locally_delaunay == 0));
+      DFP_CHECK_MSG(s.points_unused == unused_lo, s.points_unused << " vs " << unused_lo);
+      DFP_CHECK_MSG(s.points_reinserted == s.points_unused,
+                    s.points_reinserted << " reinserted, " << s.points_unused << " unused");
+      if(s.points_unused == 0)
+        DFP_CHECK(s.faces_certified + 2 * s.flips >= s.faces_in);
+      if(s.points_unused == 0 && s.flips == 0)
+        DFP_CHECK(s.faces_certified == s.faces_in);
+    }
     // A certified face is a face of the result: at most the predicted faces (as point triples)
     // that are faces of DT(points).
     const Geometry<Point> result = geometry_of(dt);
     std::vector<std::array<Point, 3>> predicted;
-    auto orientation = dt.geom_traits().orientation_2_object();
     for(const Face& f : faces) {
       std::array<Point, 3> t = {points[f[0]], points[f[1]], points[f[2]]};
       if(orientation(t[0], t[1], t[2]) == CGAL::RIGHT_TURN)

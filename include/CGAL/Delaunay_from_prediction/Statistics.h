@@ -40,8 +40,8 @@ struct Statistics
   std::size_t faces_certified = 0;
   /// number of edge flips performed.
   std::size_t flips = 0;
-  /// number of points (re)inserted by CGAL's incremental insertion: points used by no face,
-  /// or every point when the call built from scratch.
+  /// number of points (re)inserted by incremental insertion: points used by no face, vertices
+  /// of carved faces, or every point when the call built from scratch.
   std::size_t points_reinserted = 0;
   /// `true` if the call gave up on the prediction and built the triangulation from scratch.
   bool fell_back = false;
@@ -58,6 +58,17 @@ struct Statistics
   /// `true` if the points were renumbered or the faces sorted into a spatial order before the
   /// import (done for large inputs that come in no spatial order; it never changes the result).
   bool input_reordered = false;
+  /// number of predicted faces removed by the local repair (carved): inverted or flat faces
+  /// and the faces around their vertices, faces lying on the same side of an edge as another
+  /// (repeated or overlapping), and whatever the repair had to clear around holes that were
+  /// not simple polygons. Vertices left without a face are reinserted (`points_reinserted`).
+  std::size_t faces_carved = 0;
+  /// number of holes (boundary cycles of the kept faces other than the outer one) that the
+  /// local repair retriangulated.
+  std::size_t holes_refilled = 0;
+  /// number of rounds of the local repair: each round traces the holes and widens those that
+  /// cannot be retriangulated as they are (0 when nothing was carved).
+  std::size_t carve_rounds = 0;
   /// why the prediction was not used as it is: empty when it was a triangulation of the
   /// points; otherwise a static string such as `"a face is degenerate"`.
   const char* fallback_reason = "";

@@ -354,10 +354,13 @@ Prediction_measures prediction_measures(const PointRange& points, const FaceRang
   const std::size_t max_flips = choose_parameter(get_parameter(np, internal_np::max_flips),
                                                  n < 3 ? std::size_t(64) : n * (n - 1) / 2);
 
-  // DT(P), and Lawson's flip count from G when G is a triangulation.
+  // DT(P), and Lawson's flip count from G when G is a triangulation (Strategy::flips: a
+  // prediction that is not a triangulation is rebuilt, not repaired, so that fell_back tells
+  // which it is and the flips are Lawson's from G itself).
   DT dt;
   const Statistics stats = delaunay_from_prediction(
-      points, faces, dt, parameters::max_flips(max_flips, parameters::screen_prediction(false)));
+      points, faces, dt,
+      parameters::max_flips(max_flips, parameters::screen_prediction(false, parameters::strategy(Strategy::flips))));
   m.faces = stats.faces_in;
   if(m.faces >= (std::size_t(1) << 32))
     throw Invalid_prediction("Delaunay_from_prediction: prediction_measures takes fewer than 2^32 faces");

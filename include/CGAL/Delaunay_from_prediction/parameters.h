@@ -18,7 +18,28 @@ namespace Delaunay_from_prediction {
 namespace internal_np {
 enum max_flips_t { max_flips };
 enum screen_prediction_t { screen_prediction };
+enum strategy_t { strategy };
 } // namespace internal_np
+
+/*!
+\ingroup PkgDelaunayFromPredictionRef
+How `delaunay_from_prediction()` and `make_delaunay()` use a prediction (named parameter
+`strategy`). Whatever the strategy, the result is the same exact Delaunay triangulation; only
+the time differs.
+*/
+enum class Strategy {
+  /// the default: currently the same as `carve`.
+  automatic,
+  /// certify, then Lawson flips; a prediction that is not a triangulation of its points is
+  /// rebuilt from scratch at once (the behaviour before local repair existed).
+  flips,
+  /// certify; carve out inverted, flat, repeated and overlapping faces with the stars of
+  /// their vertices; retriangulate the holes and reinsert the carved vertices; then Lawson
+  /// flips. Falls back to a rebuild when the damage exceeds the budget.
+  carve,
+  /// ignore the prediction and rebuild (for comparisons).
+  rebuild
+};
 
 /// \ingroup PkgDelaunayFromPredictionRef
 /// Named parameters of the package; CGAL's own (`CGAL::parameters::...`) are visible here too.
@@ -63,6 +84,26 @@ CGAL::Named_function_parameters<T, internal_np::screen_prediction_t, CGAL::Named
 screen_prediction(const T& v, const CGAL::Named_function_parameters<A, B, C>& np)
 {
   return CGAL::Named_function_parameters<T, internal_np::screen_prediction_t,
+                                         CGAL::Named_function_parameters<A, B, C>>(v, np);
+}
+
+/// chooses how the prediction is used, see `Strategy`.
+/// \param v a `Strategy`.
+/// \returns the named parameter `strategy` with value `v`.
+template <class T>
+CGAL::Named_function_parameters<T, internal_np::strategy_t> strategy(const T& v)
+{
+  return CGAL::Named_function_parameters<T, internal_np::strategy_t>(v);
+}
+/// same, chained in front of other named parameters.
+/// \param v the value of the parameter.
+/// \param np the named parameters to chain after it.
+/// \returns the chain `v`, then `np`.
+template <class T, class A, class B, class C>
+CGAL::Named_function_parameters<T, internal_np::strategy_t, CGAL::Named_function_parameters<A, B, C>>
+strategy(const T& v, const CGAL::Named_function_parameters<A, B, C>& np)
+{
+  return CGAL::Named_function_parameters<T, internal_np::strategy_t,
                                          CGAL::Named_function_parameters<A, B, C>>(v, np);
 }
 

@@ -56,14 +56,43 @@ bool convexify_hull(Triangulation& tr,
   // f->neighbor(ccw(i)) the previous one.
   std::vector<std::pair<Face_handle, Vertex_handle>> done; // (finite face made, its b)
   Face_handle f = infinite->face();
+  // Whether no hull vertex near b but a, b, c lies in the closed triangle (a, c, b): then the
+  // face (a, c, b) is an ear of the pocket between the hull and its convex hull, and adding
+  // it overlaps no face. A pocket of a simple polygon always has such an ear at a reflex
+  // vertex (two-ears theorem: of two disjoint ears, one is not at the lid), so the flips go
+  // on until the hull is convex. Only the 32 hull vertices on either side of b are tested:
+  // a pocket's ear is tested against its own pocket; a far part of the hull reaching into
+  // the ear would make the hull wind twice, which the final check rejects (correctness never
+  // rests on this test, only the chance that the flips succeed).
+  auto is_empty_ear = [&](Face_handle from, Vertex_handle a, Vertex_handle b, Vertex_handle c) {
+    auto inside = [&](Vertex_handle v) {
+      return v != a && v != b && v != c && orientation(a->point(), c->point(), v->point()) != RIGHT_TURN &&
+             orientation(c->point(), b->point(), v->point()) != RIGHT_TURN &&
+             orientation(b->point(), a->point(), v->point()) != RIGHT_TURN;
+    };
+    Face_handle ahead = from, behind = from;
+    for(int k = 0; k < 32; ++k) {
+      ahead = ahead->neighbor(cw(ahead->index(infinite)));   // hull edges after a->b
+      behind = behind->neighbor(ccw(behind->index(infinite))); // and before it
+      if(inside(ahead->vertex(ccw(ahead->index(infinite)))) ||
+         inside(behind->vertex(cw(behind->index(infinite)))))
+        return false;
+      if(ahead == behind)
+        break;
+    }
+    return true;
+  };
   std::size_t unchanged = 0;
-  for(std::size_t steps = 0; unchanged < hull_size && steps < 4 * hull_size + 16; ++steps) {
+  // Each step passes a vertex (at most hull_size in a row) or flips one away: at most about
+  // hull_size^2 steps.
+  const std::size_t max_steps = (hull_size + 2) * (hull_size + 2);
+  for(std::size_t steps = 0; unchanged < hull_size && steps < max_steps; ++steps) {
     const int i = f->index(infinite);
     const Face_handle g = f->neighbor(cw(i));
     const Vertex_handle a = f->vertex(cw(i)), b = f->vertex(ccw(i));
     const Vertex_handle c = g->vertex(ccw(g->index(infinite)));
     if(hull_size <= 3 || orientation(a->point(), b->point(), c->point()) != RIGHT_TURN ||
-       tds.is_edge(a, c)) {
+       tds.is_edge(a, c) || !is_empty_ear(f, a, b, c)) {
       f = g;
       ++unchanged;
       continue;

@@ -43,7 +43,10 @@ bool hull_is_convex_and_wound_once(const Triangulation& tr)
 
 // Returns null if every finite face of `tr` (dimension 2) is counterclockwise, after listing
 // in `non_delaunay` every interior edge that fails the perturbed in-circle test; otherwise
-// returns why not. `hull_is_convex` tells whether the hull is a convex polygon wound once:
+// returns why not. If `bad_faces` is given, the faces that are not counterclockwise go there
+// instead, and the pass goes on (null is returned; `hull_is_convex` is then only meaningful
+// if `bad_faces` stays empty), unless more than `max_bad_faces` are found: then the pass
+// stops at once and returns why. `hull_is_convex` tells whether the hull is a convex polygon wound once:
 // then the argument of import_prediction.h (the TDS providing the twin pairing) shows that
 // `tr` is a geometric triangulation of its vertices; if not, convexify_hull() may make it one.
 // Reads only.
@@ -51,7 +54,9 @@ template <class Triangulation>
 const char* certify_triangulation(
     const Triangulation& tr,
     std::vector<std::pair<typename Triangulation::Face_handle, int>>& non_delaunay,
-    std::size_t& edges_tested, bool& hull_is_convex)
+    std::size_t& edges_tested, bool& hull_is_convex,
+    std::vector<typename Triangulation::Face_handle>* bad_faces = nullptr,
+    std::size_t max_bad_faces = 0)
 {
   using Face_handle = typename Triangulation::Face_handle;
   using Point = typename Triangulation::Point;
@@ -66,8 +71,14 @@ const char* certify_triangulation(
     const Point& p0 = f->vertex(0)->point();
     const Point& p1 = f->vertex(1)->point();
     const Point& p2 = f->vertex(2)->point();
-    if(orientation(p0, p1, p2) != LEFT_TURN)
-      return "a face is inverted or flat";
+    if(orientation(p0, p1, p2) != LEFT_TURN) {
+      if(bad_faces == nullptr)
+        return "a face is inverted or flat";
+      bad_faces->push_back(f);
+      if(bad_faces->size() > max_bad_faces)
+        return "too many faces are inverted or flat for a local repair";
+      continue;
+    }
     for(int i = 0; i < 3; ++i) {
       const Face_handle g = f->neighbor(i);
       if(!before(&*f, &*g) || g->has_vertex(infinite))

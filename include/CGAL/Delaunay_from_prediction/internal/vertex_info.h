@@ -41,6 +41,14 @@ void merge_index_info(Vertex_handle v, std::size_t index)
       v->info() = index;
 }
 
+// A vertex at the same point as `v` goes: `v` keeps the smaller of their indices.
+template <class Vertex_handle>
+void merge_index_info_of(Vertex_handle v, Vertex_handle duplicate)
+{
+  if constexpr(has_index_info<std::decay_t<decltype(*v)>>::value)
+    merge_index_info(v, static_cast<std::size_t>(duplicate->info()));
+}
+
 } // namespace internal
 } // namespace Delaunay_from_prediction
 } // namespace CGAL

@@ -1,0 +1,194 @@
+// Copyright (c) 2026 Delaunay_from_prediction contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Author(s): Delaunay_from_prediction founding team
+//
+// Entry point for a prediction given as edges (a planar straight-line graph, Corollary 4.2 of
+// the paper: a subgraph of DT(P) with edges missing): the triangles of the graph go through
+// delaunay_from_prediction(), whose local repair fills the faces with more sides (holes) and
+// corrects whatever the graph got wrong.
+
+#ifndef CGAL_DELAUNAY_FROM_PREDICTED_EDGES_2_H
+#define CGAL_DELAUNAY_FROM_PREDICTED_EDGES_2_H
+
+#include <CGAL/Delaunay_from_prediction_2.h>
+
+#include <algorithm>
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <iterator>
+#include <sstream>
+#include <type_traits>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Delaunay_from_prediction {
+namespace internal {
+
+template <class Edge, class = void>
+struct has_first_and_second : std::false_type {};
+template <class Edge>
+struct has_first_and_second<Edge, std::void_t<decltype(std::declval<const Edge&>().first),
+                                              decltype(std::declval<const Edge&>().second)>>
+    : std::true_type {};
+
+// The end j (0 or 1) of an edge given as a pair or as anything with operator[].
+template <class Edge>
+auto edge_end(const Edge& e, int j)
+{
+  if constexpr(has_first_and_second<Edge>::value)
+    return j == 0 ? e.first : e.second;
+  else
+    return e[j];
+}
+
+// Reads and validates edge number k: both ends in [0, n) and different.
+template <class Edge>
+std::pair<std::size_t, std::size_t> read_edge(const Edge& e, std::size_t k, std::size_t n)
+{
+  std::size_t out[2];
+  for(int j = 0; j < 2; ++j) {
+    const auto raw = edge_end(e, j);
+    using Index = std::decay_t<decltype(raw)>;
+    static_assert(std::is_integral<Index>::value, "Delaunay_from_prediction: edge ends must be integers");
+    bool out_of_range = false;
+    if constexpr(std::is_signed<Index>::value)
+      out_of_range = raw < 0 || static_cast<unsigned long long>(raw) >= n;
+    else
+      out_of_range = static_cast<unsigned long long>(raw) >= n;
+    if(out_of_range) {
+      std::ostringstream msg;
+      msg << "Delaunay_from_prediction: edge " << k << " has index " << +raw << " (end " << j
+          << "), outside the point range [0, " << n << ")";
+      throw Invalid_prediction(msg.str());
+    }
+    out[j] = static_cast<std::size_t>(raw);
+  }
+  if(out[0] == out[1]) {
+    std::ostringstream msg;
+    msg << "Delaunay_from_prediction: edge " << k << " joins index " << out[0] << " to itself";
+    throw Invalid_prediction(msg.str());
+  }
+  return {out[0], out[1]};
+}
+
+// The triangles of the graph: every three points pairwise joined by an edge, found by
+// intersecting the sorted neighbour lists of the two ends of each edge (each triangle once,
+// from its two smallest indices). Purely combinatorial and O(m d) for m edges of degree at
+// most d. In a graph that is DT(P) with edges missing these are the triangular faces, plus,
+// rarely, a separating triangle around a vertex of degree 3: the importer leaves out what
+// overlaps (faces on the same side of an edge), and the faces with more than three sides
+// become holes that the local repair fills (ear clipping, then flips).
+inline std::vector<std::array<std::size_t, 3>>
+graph_triangles(std::size_t n, std::vector<std::pair<std::size_t, std::size_t>>& edges)
+{
+  std::vector<std::uint64_t> keys(edges.size());
+  for(std::size_t k = 0; k < edges.size(); ++k) {
+    const std::uint64_t a = (std::min)(edges[k].first, edges[k].second);
+    const std::uint64_t b = (std::max)(edges[k].first, edges[k].second);
+    keys[k] = a << 32 | b;
+  }
+  std::sort(keys.begin(), keys.end());
+  keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
+  // Compressed adjacency, each list increasing: the neighbours of v are
+  // neighbour[start[v] .. start[v + 1]) (smaller ones from edges (u, v), then larger ones).
+  std::vector<std::size_t> start(n + 1, 0);
+  for(const std::uint64_t key : keys) {
+    ++start[(key >> 32) + 1];
+    ++start[(key & 0xffffffffu) + 1];
+  }
+  for(std::size_t v = 0; v < n; ++v)
+    start[v + 1] += start[v];
+  std::vector<std::uint32_t> neighbour(2 * keys.size());
+  {
+    std::vector<std::size_t> fill(start.begin(), start.end() - 1);
+    for(const std::uint64_t key : keys) {
+      const std::size_t a = std::size_t(key >> 32), b = std::size_t(key & 0xffffffffu);
+      neighbour[fill[a]++] = std::uint32_t(b);
+      neighbour[fill[b]++] = std::uint32_t(a);
+    }
+  }
+  std::vector<std::array<std::size_t, 3>> triangles;
+  triangles.reserve(2 * n);
+  for(const std::uint64_t key : keys) {
+    const std::size_t a = std::size_t(key >> 32), b = std::size_t(key & 0xffffffffu);
+    // Common neighbours w > b of a and b.
+    std::size_t i = start[a], j = start[b];
+    const std::size_t i_end = start[a + 1], j_end = start[b + 1];
+    while(i < i_end && neighbour[i] <= b)
+      ++i;
+    while(j < j_end && neighbour[j] <= b)
+      ++j;
+    while(i < i_end && j < j_end) {
+      if(neighbour[i] < neighbour[j])
+        ++i;
+      else if(neighbour[j] < neighbour[i])
+        ++j;
+      else {
+        triangles.push_back({a, b, std::size_t(neighbour[i])});
+        ++i;
+        ++j;
+      }
+    }
+  }
+  return triangles;
+}
+
+} // namespace internal
+
+/*!
+\ingroup PkgDelaunayFromPredictionRef
+computes the Delaunay triangulation of `points` into `dt`, using `edges` as a prediction of
+its edges (a planar straight-line graph, typically \f$DT(P)\f$ with edges missing,
+Corollary 4.2 of the paper).
+
+The triangles of the graph (three points pairwise joined by edges) are handed to
+`delaunay_from_prediction()` as the predicted faces. Its local repair turns the faces of the
+graph with more than three sides into holes and triangulates them (ear clipping, then flips),
+leaves out triangles that overlap others (a separating triangle around a vertex of degree
+three), and corrects whatever else the graph got wrong (crossing edges). The result is exactly
+CGAL's Delaunay triangulation of the points. The graph costs \f$O(m \log m + m d)\f$ for
+\f$m\f$ edges and maximum degree \f$d\f$ (a sort of the edges, then a merge of two neighbour
+lists per edge), and uses no geometry.
+
+\tparam PointRange a random-access range of `DT::Point`.
+\tparam EdgeRange a range whose elements `e` give two integer indices into `points`, as
+        `e[0]`, `e[1]` or as `e.first`, `e.second` (for example `std::pair<int, int>`).
+\tparam DT a `CGAL::Delaunay_triangulation_2<Gt, Tds>`; vertex `info()`, if assignable from
+        `std::size_t`, receives the point index as in `delaunay_from_prediction()`.
+\tparam NamedParameters a sequence of named parameters, passed on to
+        `delaunay_from_prediction()`.
+
+\param points the points.
+\param edges the predicted edges, in any order and direction; repeated edges are allowed.
+\param dt receives the result; cleared first.
+\param np optional named parameters, see `delaunay_from_prediction()`.
+
+\returns what the call did, see `Statistics`; `faces_in` is the number of triangles derived
+         from the graph.
+\throws Invalid_prediction if a point has a non-finite coordinate, or an edge has an index out
+        of range or joins a point to itself. Then `dt` is unchanged.
+*/
+template <class PointRange, class EdgeRange, class DT,
+          class NamedParameters = parameters::Default_named_parameters>
+Statistics delaunay_from_predicted_edges(const PointRange& points, const EdgeRange& edges, DT& dt,
+                                         const NamedParameters& np = parameters::default_values())
+{
+  const auto point_at = std::begin(points);
+  const std::size_t n = std::size_t(std::distance(std::begin(points), std::end(points)));
+  internal::check_points_are_finite(point_at, n);
+  std::vector<std::pair<std::size_t, std::size_t>> read;
+  std::size_t k = 0;
+  for(const auto& e : edges)
+    read.push_back(internal::read_edge(e, k++, n));
+  if(n >= (std::size_t(1) << 32))
+    return delaunay_from_prediction(points, std::vector<std::array<std::size_t, 3>>(), dt, np);
+  const std::vector<std::array<std::size_t, 3>> triangles = internal::graph_triangles(n, read);
+  return delaunay_from_prediction(points, triangles, dt, np);
+}
+
+} // namespace Delaunay_from_prediction
+} // namespace CGAL
+
+#endif // CGAL_DELAUNAY_FROM_PREDICTED_EDGES_2_H

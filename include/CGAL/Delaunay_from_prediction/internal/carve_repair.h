@@ -1,0 +1,1010 @@
+// Copyright (c) 2026 Delaunay_from_prediction contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Author(s): Delaunay_from_prediction founding team
+//
+// Local repair of a prediction that is not a triangulation (Appendix A of the paper, in the
+// practical form this package uses): carve out what is geometrically wrong, retriangulate the
+// holes, reinsert the vertices left without a face, and let Lawson's flips (lawson_flip.h)
+// finish. Used by make_delaunay (inverted or flat faces after moves, in place, vertex objects
+// kept) and by delaunay_from_prediction (holes, repeated, overlapping or degenerate faces,
+// missing hull faces: the importer hands over the faces it could pair, with open half-edges).
+//
+// Why the result is a triangulation. Every face kept is counterclockwise: make_delaunay
+// carves the star of every vertex of a face that is not, and the importer never creates one.
+// Each hole, a cycle of open half-edges of the kept faces, is filled by ear clipping with
+// counterclockwise ears only, and the outer cycle is closed with infinite faces and made
+// convex by hull flips that add counterclockwise faces (hull_repair.h). Then every finite
+// face is counterclockwise and the hull is checked to be a convex polygon wound once; by the
+// winding-number argument of import_prediction.h the faces tile the hull exactly once: a
+// triangulation of its vertices, whatever the holes looked like. If the final check fails,
+// make_delaunay rolls every change back (then rebuilds), so the caller's triangulation is
+// never left half-repaired. The reinserted vertices go in by CGAL's point location and
+// insertion into this valid triangulation; the flips then need no trust in the prediction:
+// Lawson's algorithm reaches the Delaunay triangulation from any triangulation.
+//
+// Why ear clipping and not a Delaunay triangulation of each hole, or Chan's structures:
+// measured holes after moves are small (a median of about 10 boundary edges at sigma = 0.1
+// spacing), where ear clipping's few orientation tests and no allocation beat building an
+// auxiliary triangulation; the flips that follow make each hole Delaunay at the cost of a
+// few flips per hole edge.
+
+#ifndef CGAL_DELAUNAY_FROM_PREDICTION_INTERNAL_CARVE_REPAIR_H
+#define CGAL_DELAUNAY_FROM_PREDICTION_INTERNAL_CARVE_REPAIR_H
+
+#include <CGAL/Delaunay_from_prediction/internal/ear_clipping.h>
+#include <CGAL/Delaunay_from_prediction/internal/hull_repair.h>
+#include <CGAL/Delaunay_from_prediction/internal/predicates.h>
+#include <CGAL/Delaunay_from_prediction/internal/spatial_order.h>
+#include <CGAL/Delaunay_from_prediction/internal/tds_certify.h>
+
+#include <CGAL/Triangulation_2.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <cstring>
+#include <type_traits>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Delaunay_from_prediction {
+namespace internal {
+
+// Untangling by flips, before any carving (make_delaunay). A face inverted by small moves is
+// most often a vertex a that crossed the opposite edge (b, c) into the neighbour (c, b, d):
+// then a lies inside that neighbour, and flipping (b, c) to (a, d) gives two faces that are
+// both counterclockwise. Each bad face whose flip does that is flipped (the neighbour is
+// finite, the new edge not already there); the faces still bad afterwards are returned in
+// `bad`. The flips are combinatorial: nothing here assumes the faces tile the plane; the
+// certificate stays the one at the top of this file (every face ccw, hull convex and wound
+// once). Each flip made is logged as its new edge, so undo_untangling() can restore `tr`.
+template <class Triangulation>
+void untangle_by_flips(Triangulation& tr, std::vector<typename Triangulation::Face_handle>& bad,
+                       std::vector<std::pair<typename Triangulation::Face_handle, int>>& stack,
+                       std::vector<std::pair<typename Triangulation::Vertex_handle,
+                                             typename Triangulation::Vertex_handle>>& log,
+                       std::vector<typename Triangulation::Face_handle>& touched)
+{
+  using Face_handle = typename Triangulation::Face_handle;
+  auto orientation = tr.geom_traits().orientation_2_object();
+  auto& tds = tr.tds();
+  const auto infinite = tr.infinite_vertex();
+  auto is_ccw = [&](Face_handle f) {
+    return orientation(f->vertex(0)->point(), f->vertex(1)->point(), f->vertex(2)->point()) == LEFT_TURN;
+  };
+  for(const Face_handle f : bad) {
+    if(is_ccw(f))
+      continue; // made ccw by an earlier flip
+    for(int i = 0; i < 3; ++i) {
+      const Face_handle g = f->neighbor(i);
+      if(g->has_vertex(infinite))
+        continue;
+      const auto a = f->vertex(i), b = f->vertex(ccw(i)), c = f->vertex(cw(i));
+      const auto d = g->vertex(tds.mirror_index(f, i));
+      if(orientation(a->point(), b->point(), d->point()) != LEFT_TURN ||
+         orientation(a->point(), d->point(), c->point()) != LEFT_TURN || tds.is_edge(a, d))
+        continue;
+      tds.flip(f, i); // f = (a, b, d), g = (d, c, a): see lawson_flip.h
+      log.emplace_back(a, d);
+      touched.push_back(f);
+      touched.push_back(g);
+      for(int k = 0; k < 3; ++k) {
+        stack.emplace_back(f, k);
+        stack.emplace_back(g, k);
+      }
+      break;
+    }
+  }
+  bad.erase(std::remove_if(bad.begin(), bad.end(), is_ccw), bad.end());
+  std::sort(bad.begin(), bad.end());
+  bad.erase(std::unique(bad.begin(), bad.end()), bad.end());
+}
+
+// Undoes the flips of untangle_by_flips(), latest first (each logged edge is flipped back).
+template <class Triangulation>
+void undo_untangling(Triangulation& tr,
+                     std::vector<std::pair<typename Triangulation::Vertex_handle,
+                                           typename Triangulation::Vertex_handle>>& log)
+{
+  for(auto it = log.rbegin(); it != log.rend(); ++it) {
+    typename Triangulation::Face_handle f;
+    int i = 0;
+    const bool found = tr.tds().is_edge(it->first, it->second, f, i);
+    CGAL_assertion(found);
+    if(found)
+      tr.tds().flip(f, i);
+  }
+  log.clear();
+}
+
+// Open-addressing hash table keyed by object addresses (never null), with a value per key.
+// Grows by doubling; no deletion (the carve only ever adds).
+template <class Value>
+class Address_table
+{
+public:
+  Address_table() { resize(64); }
+
+  // Inserts `key` with `value` if absent; returns a pointer to the stored value and whether
+  // it was inserted.
+  std::pair<Value*, bool> insert(const void* key, const Value& value)
+  {
+    if(2 * (size_ + 1) > keys_.size())
+      resize(2 * keys_.size());
+    std::size_t i = home(key);
+    for(; keys_[i] != nullptr; i = (i + 1) & mask_)
+      if(keys_[i] == key)
+        return {&values_[i], false};
+    keys_[i] = key;
+    values_[i] = value;
+    ++size_;
+    return {&values_[i], true};
+  }
+
+  const Value* find(const void* key) const
+  {
+    for(std::size_t i = home(key); keys_[i] != nullptr; i = (i + 1) & mask_)
+      if(keys_[i] == key)
+        return &values_[i];
+    return nullptr;
+  }
+
+  bool contains(const void* key) const { return find(key) != nullptr; }
+  std::size_t size() const { return size_; }
+
+  void clear()
+  {
+    std::fill(keys_.begin(), keys_.end(), nullptr);
+    size_ = 0;
+  }
+
+private:
+  std::size_t home(const void* key) const
+  {
+    return std::size_t((std::uint64_t(reinterpret_cast<std::uintptr_t>(key)) * 0x9E3779B97F4A7C15ull) >>
+                       shift_);
+  }
+  void resize(std::size_t capacity)
+  {
+    std::vector<const void*> old_keys(capacity, nullptr);
+    std::vector<Value> old_values(capacity);
+    old_keys.swap(keys_);
+    old_values.swap(values_);
+    mask_ = capacity - 1;
+    shift_ = 64;
+    for(std::size_t c = capacity; c > 1; c >>= 1)
+      --shift_;
+    size_ = 0;
+    for(std::size_t k = 0; k < old_keys.size(); ++k)
+      if(old_keys[k] != nullptr)
+        insert(old_keys[k], old_values[k]);
+  }
+
+  std::vector<const void*> keys_;
+  std::vector<Value> values_;
+  std::size_t mask_ = 0, size_ = 0;
+  int shift_ = 64;
+};
+
+// Limits of the local repair; past them the caller rebuilds (a damage that large is cheaper
+// to rebuild, and the ear clipping is quadratic in a hole's size).
+struct Carve_limits
+{
+  std::size_t max_removed_faces = 0; // faces carved in all
+  std::size_t max_bad_faces = 0;     // faces found wrong before any carving
+  std::size_t max_rounds = 24;       // rounds of widening holes that cannot be filled
+  std::size_t max_hole_size = 1024;  // boundary edges of one hole
+};
+
+template <class Triangulation>
+class Carve_repair
+{
+public:
+  using Tds = typename Triangulation::Triangulation_data_structure;
+  using Vertex_handle = typename Triangulation::Vertex_handle;
+  using Face_handle = typename Triangulation::Face_handle;
+  using Point = typename Triangulation::Point;
+  using Edge = std::pair<Face_handle, int>;
+
+  // `keep_undo_log`: record what commit() removes, so that rollback() can restore it.
+  Carve_repair(Triangulation& tr, bool keep_undo_log)
+      : tr_(tr), tds_(tr.tds()), infinite_(tr.infinite_vertex()), keep_undo_log_(keep_undo_log)
+  {}
+
+  // --- Planning: reads the triangulation only. -------------------------------------------
+
+  // Carves every face around `v` and reinserts `v` later.
+  void carve_star(Vertex_handle v)
+  {
+    if(v != infinite_ && detached_set_.insert(&*v, 0).second)
+      pending_.push_back(v);
+  }
+
+  // A half-edge (f, i) of a kept face with no neighbour (importer only).
+  void add_open_halfedge(Face_handle f, int i) { given_open_.emplace_back(f, i); }
+
+  // The importer's TDS has no infinite faces yet: the outer boundary is a cycle to close.
+  void expect_outer_cycle() { outer_open_ = true; }
+
+  // The faces may meet at a vertex in several fans (the importer, after it left out faces on
+  // the same side of an edge as others): checked by one pass at commit().
+  void expect_several_fans() { may_have_several_fans_ = true; }
+
+  // Carves, traces the holes, and widens the holes that cannot be filled, round after round.
+  // Returns null when every hole has a fill; otherwise why the repair gives up.
+  const char* plan(const Carve_limits& limits)
+  {
+    for(rounds_ = 1; rounds_ <= limits.max_rounds; ++rounds_) {
+      for(std::size_t k = 0; k < pending_.size(); ++k)
+        carve_faces_around(pending_[k]);
+      pending_.clear();
+      if(removed_list_.size() > limits.max_removed_faces)
+        return "the damage exceeds the budget of the local repair";
+      const std::size_t before_trace = removed_list_.size();
+      const char* why = trace_and_fill(limits);
+      if(why != nullptr)
+        return why;
+      if(pending_.empty() && removed_list_.size() == before_trace) {
+        collect_isolated_vertices();
+        return nullptr;
+      }
+    }
+    return "holes kept growing past the budget of the local repair";
+  }
+
+  std::size_t rounds() const { return rounds_ > 0 ? rounds_ : 0; }
+  std::size_t faces_removed() const { return removed_finite_; }
+  std::size_t holes() const
+  {
+    std::size_t count = 0;
+    for(std::size_t l = 0; l < loops_.size(); ++l)
+      count += !loops_[l].dead && l != outer_ ? 1 : 0;
+    return count;
+  }
+  const std::vector<Vertex_handle>& detached() const { return detached_; }
+  bool is_removed(Face_handle f) const { return removed_.contains(&*f); }
+
+  // --- Modifying. ------------------------------------------------------------------------
+
+  // Deletes the carved faces (the entries of `stack` on them first), fills the holes, and
+  // closes the outer cycle with infinite faces. Every new face's edges go on `stack`.
+  void commit(std::vector<Edge>& stack)
+  {
+    stack.erase(std::remove_if(stack.begin(), stack.end(),
+                               [&](const Edge& e) { return removed_.contains(&*e.first); }),
+                stack.end());
+    if(keep_undo_log_)
+      record_undo_log();
+    for(const Face_handle f : removed_list_)
+      tds_.delete_face(f);
+    if(may_have_several_fans_)
+      keep_vertices_with_other_fans();
+    for(const Vertex_handle v : detached_)
+      v->set_face(Face_handle());
+    // Every vertex on a cycle keeps the face of an outgoing open half-edge.
+    for(std::size_t k = 0; k < open_.size(); ++k)
+      if(alive_[k])
+        open_[k].first->vertex(ccw(open_[k].second))->set_face(open_[k].first);
+
+    // Ears. Polygon edges pair with their open half-edge, diagonals with each other.
+    std::vector<std::pair<std::uint64_t, Edge>> diagonals;
+    for(const Loop& loop : loops_) {
+      if(loop.dead)
+        continue;
+      if(loop.halfedges.size() == 2) { // two kept faces on one edge, not linked (importer only)
+        const Edge& a = open_[loop.halfedges[0]];
+        const Edge& b = open_[loop.halfedges[1]];
+        tds_.set_adjacency(a.first, a.second, b.first, b.second);
+        stack.push_back(a);
+        continue;
+      }
+      for(const Ear& ear : loop.ears) {
+        const Face_handle f = tds_.create_face(ear.v[0], ear.v[1], ear.v[2]);
+        created_.push_back(f);
+        created_set_.insert(&*f, 0);
+        for(int i = 0; i < 3; ++i) {
+          stack.emplace_back(f, i);
+          if(ear.open[i] != none) {
+            const Edge& e = open_[ear.open[i]];
+            tds_.set_adjacency(f, i, e.first, e.second);
+          } else {
+            diagonals.emplace_back(ear.diagonal[i], Edge(f, i));
+          }
+        }
+      }
+    }
+    std::sort(diagonals.begin(), diagonals.end(),
+              [](const auto& a, const auto& b) { return a.first < b.first; });
+    for(std::size_t k = 0; k + 1 < diagonals.size(); k += 2) {
+      CGAL_assertion(diagonals[k].first == diagonals[k + 1].first);
+      tds_.set_adjacency(diagonals[k].second.first, diagonals[k].second.second,
+                         diagonals[k + 1].second.first, diagonals[k + 1].second.second);
+    }
+
+    // The outer cycle: the face outside half-edge u->v is (v, u, infinite), as in the importer.
+    if(outer_ != none) {
+      const std::vector<std::size_t>& outer_cycle = loops_[outer_].halfedges;
+      const std::size_t m = outer_cycle.size();
+      std::vector<Face_handle> outside(m);
+      for(std::size_t k = 0; k < m; ++k) {
+        const Edge& e = open_[outer_cycle[k]];
+        outside[k] = tds_.create_face(e.first->vertex(cw(e.second)), e.first->vertex(ccw(e.second)),
+                                      infinite_);
+        created_.push_back(outside[k]);
+        created_set_.insert(&*outside[k], 0);
+        tds_.set_adjacency(outside[k], 2, e.first, e.second);
+      }
+      for(std::size_t k = 0; k < m; ++k)
+        tds_.set_adjacency(outside[k], 1, outside[(k + 1) % m], 0);
+      infinite_->set_face(outside[0]);
+    }
+    committed_ = true;
+  }
+
+  // After commit(): makes the hull convex if it is not (hull flips); returns whether the
+  // result is a triangulation (see the argument at the top of this file).
+  bool finish_hull(std::vector<Edge>& stack, std::size_t& flips)
+  {
+    if(hull_is_convex_and_wound_once(tr_))
+      return true;
+    std::vector<const void*> made;
+    if(!convexify_hull(tr_, stack, made, flips)) {
+      return false;
+    }
+    for(const void* f : made)
+      created_set_.insert(f, 0);
+    return true;
+  }
+
+  // After commit() (and a failed finish_hull()): restores the triangulation as it was before
+  // commit(): same vertices, same connectivity (new face objects).
+  void rollback()
+  {
+    CGAL_precondition(keep_undo_log_ && committed_);
+    for(const Face_handle f : created_)
+      tds_.delete_face(f);
+    created_.clear();
+    const std::size_t m = undo_.size();
+    std::vector<Face_handle> again(m);
+    for(std::size_t k = 0; k < m; ++k)
+      again[k] = tds_.create_face(undo_[k].v[0], undo_[k].v[1], undo_[k].v[2]);
+    for(std::size_t k = 0; k < m; ++k) {
+      for(int i = 0; i < 3; ++i) {
+        undo_[k].v[i]->set_face(again[k]);
+        const void* old = undo_[k].neighbor[i];
+        if(const std::size_t* at = old_index_.find(old)) {
+          again[k]->set_neighbor(i, again[*at]);
+          continue;
+        }
+        // A kept face: find the slot of the shared edge there.
+        const Face_handle g = tds_.faces().iterator_to(*static_cast<typename Tds::Face*>(const_cast<void*>(old)));
+        const Vertex_handle a = undo_[k].v[ccw(i)], b = undo_[k].v[cw(i)];
+        for(int j = 0; j < 3; ++j)
+          if(g->vertex(j) != a && g->vertex(j) != b)
+            tds_.set_adjacency(again[k], i, g, j);
+      }
+    }
+    committed_ = false;
+  }
+
+  // Reinserts the carved vertices, keeping each vertex object: CGAL's location and insertion
+  // of the triangulation base class (no flips), then the new vertex object is replaced by the
+  // old one in its faces. The edges around each go on `stack`. `on_duplicate(v, w)` is called
+  // when v's point is already the point of vertex w (v is then deleted by the callee or left
+  // detached: it is not reinserted). Faces of the prediction that insertion modifies go to
+  // `modified`.
+  template <class OnDuplicate>
+  void reinsert(std::vector<Edge>& stack, std::vector<const void*>& modified, OnDuplicate on_duplicate)
+  {
+    using Base = Triangulation_2<typename Triangulation::Geom_traits, Tds>;
+    Base& base = static_cast<Base&>(tr_);
+    std::vector<std::size_t> order(detached_.size());
+    for(std::size_t k = 0; k < order.size(); ++k)
+      order[k] = k;
+    sort_along_grid(order, [&](std::size_t k) -> const Point& { return detached_[k]->point(); }, false);
+    Face_handle hint = infinite_->face();
+    for(const std::size_t k : order) {
+      const Vertex_handle v = detached_[k];
+      typename Base::Locate_type lt;
+      int li = 0;
+      const Face_handle loc = base.locate(v->point(), lt, li, hint);
+      if(lt == Base::VERTEX) {
+        on_duplicate(v, loc->vertex(li));
+        continue;
+      }
+      note_modified(loc, modified);
+      if(lt == Base::EDGE)
+        note_modified(loc->neighbor(li), modified);
+      const Vertex_handle fresh = base.insert(v->point(), lt, loc, li);
+      // Transplant: v takes the place of the vertex insertion made.
+      Face_handle f = fresh->face();
+      const Face_handle first = f;
+      do {
+        const int i = f->index(fresh);
+        f->set_vertex(i, v);
+        created_set_.insert(&*f, 0);
+        stack.emplace_back(f, i);
+        stack.emplace_back(f, cw(i));
+        f = f->neighbor(ccw(i));
+      } while(f != first);
+      v->set_face(first);
+      tds_.delete_vertex(fresh);
+      hint = first;
+    }
+  }
+
+  // Whether `f` was made by this repair (ears, infinite faces, hull flips, insertions).
+  bool is_created(const void* f) const { return created_set_.contains(f); }
+
+private:
+  static constexpr std::size_t none = std::size_t(-1);
+
+  struct Ear
+  {
+    Vertex_handle v[3];
+    std::size_t open[3];         // index into open_ of the polygon edge opposite v[i], or none
+    std::uint64_t diagonal[3];   // else a key shared by the two ears on that diagonal
+  };
+  struct Loop
+  {
+    std::vector<std::size_t> halfedges; // open half-edges in order, kept faces on their left
+    std::vector<Ear> ears;              // the fill of a hole
+    std::size_t lowest = 0;             // position of the lowest-leftmost tail
+    Orientation turn = COLLINEAR;       // the turn there: the loop's winding if it is simple
+    bool dead = false;                  // traced again since
+    std::size_t group = 0;              // loops split from one cycle share it
+  };
+  struct Undo_entry
+  {
+    Vertex_handle v[3];
+    const void* neighbor[3];
+  };
+
+  void note_modified(Face_handle f, std::vector<const void*>& modified) const
+  {
+    if(!f->has_vertex(infinite_) && !created_set_.contains(&*f))
+      modified.push_back(&*f);
+  }
+
+  // The faces around `v`, which may have open (null) neighbours in the importer's TDS.
+  void faces_around(Vertex_handle v, std::vector<Face_handle>& out) const
+  {
+    out.clear();
+    const Face_handle start = v->face();
+    if(start == Face_handle())
+      return;
+    Face_handle f = start;
+    do {
+      out.push_back(f);
+      f = f->neighbor(ccw(f->index(v)));
+    } while(f != Face_handle() && f != start);
+    if(f == start)
+      return;
+    for(f = start->neighbor(cw(start->index(v))); f != Face_handle(); f = f->neighbor(cw(f->index(v))))
+      out.push_back(f);
+  }
+
+  void carve_faces_around(Vertex_handle v)
+  {
+    std::vector<Face_handle> faces;
+    faces_around(v, faces);
+    for(const Face_handle f : faces)
+      remove(f);
+  }
+
+  void remove(Face_handle f)
+  {
+    if(!removed_.insert(&*f, removed_list_.size()).second)
+      return;
+    removed_list_.push_back(f);
+    if(!f->has_vertex(infinite_)) {
+      ++removed_finite_;
+      return;
+    }
+    if(outer_open_)
+      return;
+    // One infinite face carved: carve them all, the outer boundary becomes a cycle to close.
+    outer_open_ = true;
+    std::vector<Face_handle> faces;
+    faces_around(infinite_, faces);
+    for(const Face_handle g : faces)
+      remove(g);
+  }
+
+  // One round of tracing, incremental: the faces carved since the last round (from
+  // removed_list_[traced_] on) open new half-edges and close those on them, and only the
+  // loops through a vertex of such a face can change (the successor of a half-edge depends
+  // only on the faces around its head). Those loops are traced again from scratch: split at
+  // repeated vertices, classified, and filled; the others keep their fill.
+  const char* trace_and_fill(const Carve_limits& limits)
+  {
+    const std::size_t first_new = traced_;
+    traced_ = removed_list_.size();
+    const bool outer_is_open = outer_open_; // widening below may open it: traced next round
+
+    Address_table<char> changed; // vertices of faces carved this round
+    std::vector<std::size_t> to_trace;
+    auto open = [&](Face_handle g, int j) {
+      to_trace.push_back(open_.size());
+      position_.insert(halfedge_key(Edge(g, j)), open_.size());
+      open_.emplace_back(g, j);
+      alive_.push_back(1);
+      loop_of_.push_back(none);
+    };
+    for(std::size_t k = first_new; k < traced_; ++k) {
+      const Face_handle f = removed_list_[k];
+      for(int i = 0; i < 3; ++i) {
+        changed.insert(&*f->vertex(i), 0);
+        if(const std::size_t* at = position_.find(halfedge_key(Edge(f, i))))
+          alive_[*at] = 0;
+        const Face_handle g = f->neighbor(i);
+        if(g != Face_handle() && !removed_.contains(&*g))
+          open(g, g->index(f));
+      }
+    }
+    if(rounds_ == 1)
+      for(const Edge& e : given_open_)
+        if(!removed_.contains(&*e.first))
+          open(e.first, e.second);
+
+    // Loops to trace again: those through a changed vertex, with every loop split from the
+    // same cycle (at a split vertex the loops' successors are not next_open()'s).
+    std::vector<char> dirty_group(groups_, 0);
+    for(const Loop& loop : loops_) {
+      if(loop.dead || dirty_group[loop.group])
+        continue;
+      for(const std::size_t h : loop.halfedges)
+        if(!alive_[h] || changed.contains(&*tail_vertex(h))) {
+          dirty_group[loop.group] = 1;
+          break;
+        }
+    }
+    for(Loop& loop : loops_) {
+      if(loop.dead || !dirty_group[loop.group])
+        continue;
+      loop.dead = true;
+      for(const std::size_t h : loop.halfedges)
+        if(alive_[h]) {
+          loop_of_[h] = none;
+          to_trace.push_back(h);
+        }
+    }
+
+    // Cycles. The open half-edge after h, which ends at v, is found by turning around v
+    // through kept faces, away from the hole, to the first open half-edge leaving v. So two
+    // holes may touch at a vertex; a cycle that passes twice through a vertex is split there
+    // into loops.
+    std::vector<std::vector<std::size_t>> cycles;
+    std::vector<std::size_t> group_of_cycle;
+    std::vector<std::size_t> cycle;
+    for(const std::size_t k : to_trace) {
+      if(!alive_[k] || loop_of_[k] != none)
+        continue;
+      cycle.clear();
+      std::size_t at = k;
+      bool closed = true;
+      do {
+        loop_of_[at] = loops_.size(); // provisional: marks it seen
+        cycle.push_back(at);
+        at = next_open(at);
+        if(at == none) {
+          closed = false;
+          break;
+        }
+      } while(at != k && loop_of_[at] == none);
+      if(!closed || at != k) {
+        for(const std::size_t h : cycle)
+          loop_of_[h] = none;
+        widen(cycle); // not a closed cycle: the faces around are inconsistent
+        continue;
+      }
+      split_into_loops(cycle, cycles);
+      group_of_cycle.resize(cycles.size(), groups_++);
+    }
+
+    // Each loop is classified at its lowest-leftmost vertex, where a simple loop turns the
+    // way it winds: clockwise loops are holes, filled by ear clipping; counterclockwise ones
+    // are the outer boundary (when it is open) or islands, kept faces hanging by one vertex
+    // or lying over others, carved. A misjudged non-simple loop only fails the final check.
+    auto orientation = tr_.geom_traits().orientation_2_object();
+    for(std::size_t c = 0; c < cycles.size(); ++c) {
+      Loop loop;
+      loop.halfedges = std::move(cycles[c]);
+      loop.group = group_of_cycle[c];
+      const std::size_t m = loop.halfedges.size();
+      loop.lowest = lowest(loop.halfedges);
+      loop.turn = m < 3 ? COLLINEAR
+                        : orientation(tail_point(loop.halfedges[(loop.lowest + m - 1) % m]),
+                                      tail_point(loop.halfedges[loop.lowest]),
+                                      tail_point(loop.halfedges[(loop.lowest + 1) % m]));
+      if(m > limits.max_hole_size && loop.turn != LEFT_TURN)
+        return "a hole is larger than the budget of the local repair";
+      if(m != 2 && loop.turn == RIGHT_TURN && !fill(loop.halfedges, loop.ears))
+        widen(loop.halfedges);
+      if(m != 2 && loop.turn == COLLINEAR)
+        widen(loop.halfedges);
+      for(const std::size_t h : loop.halfedges)
+        loop_of_[h] = loops_.size();
+      loops_.push_back(std::move(loop));
+    }
+
+    // The outer loop: the counterclockwise loop with the lowest-leftmost vertex of all.
+    auto compare_xy = tr_.geom_traits().compare_xy_2_object();
+    outer_ = none;
+    if(outer_is_open) {
+      for(std::size_t l = 0; l < loops_.size(); ++l) {
+        const Loop& loop = loops_[l];
+        if(loop.dead || loop.turn != LEFT_TURN)
+          continue;
+        if(outer_ == none || compare_xy(tail_point(loop.halfedges[loop.lowest]),
+                                        tail_point(loops_[outer_].halfedges[loops_[outer_].lowest])) == SMALLER)
+          outer_ = l;
+      }
+      if(outer_ == none)
+        return "the outer boundary of the kept faces is not counterclockwise";
+      // A flap of faces folded over others and glued to them edge by edge shows only in the
+      // outer loop, which then winds twice: it must be a simple polygon (every other loop
+      // winds at most once, so the faces then cover each point at most once).
+      if(carve_crossings(loops_[outer_].halfedges))
+        return nullptr; // widened: traced again next round
+    }
+    for(std::size_t l = 0; l < loops_.size(); ++l)
+      if(!loops_[l].dead && l != outer_ && loops_[l].turn == LEFT_TURN) {
+        widen(loops_[l].halfedges, false); // an island: its faces go, layer by layer
+        if(given_open_.size() > 0)
+          may_have_several_fans_ = true;
+      }
+    return nullptr;
+  }
+
+  // Finds the pairs of edges of a loop that meet other than at a shared end (the loop is not
+  // a simple polygon) and carves the stars of their ends; returns whether it found any.
+  // Edges are bucketed in a grid of about one edge per cell over the loop's bounding box (by
+  // their approximate bounding boxes, widened so that no meeting pair is missed), and only
+  // edges sharing a cell are tested, exactly.
+  bool carve_crossings(const std::vector<std::size_t>& loop)
+  {
+    const std::size_t m = loop.size();
+    if(m < 4)
+      return false;
+    auto orientation = tr_.geom_traits().orientation_2_object();
+    auto compare_xy = tr_.geom_traits().compare_xy_2_object();
+    std::vector<const Point*> p(m);
+    for(std::size_t k = 0; k < m; ++k)
+      p[k] = &tail_point(loop[k]);
+    double xmin = CGAL::to_double(p[0]->x()), xmax = xmin, ymin = CGAL::to_double(p[0]->y()), ymax = ymin;
+    for(const Point* q : p) {
+      xmin = (std::min)(xmin, CGAL::to_double(q->x()));
+      xmax = (std::max)(xmax, CGAL::to_double(q->x()));
+      ymin = (std::min)(ymin, CGAL::to_double(q->y()));
+      ymax = (std::max)(ymax, CGAL::to_double(q->y()));
+    }
+    const std::size_t side = (std::max)(std::size_t(1), std::size_t(std::sqrt(double(m))));
+    const double margin = 1e-9 * ((xmax - xmin) + (ymax - ymin)) + 1e-300;
+    const double sx = xmax > xmin ? double(side) / (xmax - xmin) : 0, sy = ymax > ymin ? double(side) / (ymax - ymin) : 0;
+    auto cell = [&](double v, double lo, double scale) {
+      const double c = (v - lo) * scale;
+      return c <= 0 ? std::size_t(0) : (std::min)(side - 1, std::size_t(c));
+    };
+    std::vector<std::vector<std::size_t>> grid(side * side);
+    for(std::size_t k = 0; k < m; ++k) {
+      const Point& a = *p[k];
+      const Point& b = *p[(k + 1) % m];
+      const double x0 = (std::min)(CGAL::to_double(a.x()), CGAL::to_double(b.x())) - margin;
+      const double x1 = (std::max)(CGAL::to_double(a.x()), CGAL::to_double(b.x())) + margin;
+      const double y0 = (std::min)(CGAL::to_double(a.y()), CGAL::to_double(b.y())) - margin;
+      const double y1 = (std::max)(CGAL::to_double(a.y()), CGAL::to_double(b.y())) + margin;
+      for(std::size_t cx = cell(x0, xmin, sx); cx <= cell(x1, xmin, sx); ++cx)
+        for(std::size_t cy = cell(y0, ymin, sy); cy <= cell(y1, ymin, sy); ++cy)
+          grid[cy * side + cx].push_back(k);
+    }
+    // Closed segments [a, b] and [c, d] meet.
+    auto meet = [&](const Point& a, const Point& b, const Point& c, const Point& d) {
+      const Orientation o1 = orientation(a, b, c), o2 = orientation(a, b, d);
+      const Orientation o3 = orientation(c, d, a), o4 = orientation(c, d, b);
+      if(o1 != o2 && o3 != o4 && o1 != COLLINEAR && o2 != COLLINEAR && o3 != COLLINEAR && o4 != COLLINEAR)
+        return true;
+      auto on = [&](const Point& q, const Point& u, const Point& v, Orientation o) { // q on [u, v]
+        return o == COLLINEAR && compare_xy(q, (std::min)(u, v, [&](const Point& x, const Point& y) { return compare_xy(x, y) == SMALLER; })) != SMALLER &&
+               compare_xy(q, (std::max)(u, v, [&](const Point& x, const Point& y) { return compare_xy(x, y) == SMALLER; })) != LARGER;
+      };
+      return on(c, a, b, o1) || on(d, a, b, o2) || on(a, c, d, o3) || on(b, c, d, o4);
+    };
+    bool found = false;
+    for(const std::vector<std::size_t>& bucket : grid)
+      for(std::size_t i = 0; i < bucket.size(); ++i)
+        for(std::size_t j = i + 1; j < bucket.size(); ++j) {
+          std::size_t e = bucket[i], f = bucket[j];
+          if(e > f)
+            std::swap(e, f);
+          const bool adjacent = f == e + 1 || (e == 0 && f == m - 1);
+          const Point& a = *p[e];
+          const Point& b = *p[(e + 1) % m];
+          const Point& c = *p[f];
+          const Point& d = *p[(f + 1) % m];
+          bool bad = false;
+          if(!adjacent) {
+            bad = meet(a, b, c, d);
+          } else { // consecutive edges share one end; they must not fold back on each other
+            const Point& shared = (f == e + 1) ? b : a;
+            const Point& u = (f == e + 1) ? a : b;
+            const Point& w = (f == e + 1) ? d : c;
+            bad = orientation(u, shared, w) == COLLINEAR &&
+                  compare_xy(u, shared) != compare_xy(shared, w);
+          }
+          if(bad) {
+            for(const std::size_t k : {e, (e + 1) % m, f, (f + 1) % m})
+              carve_star(tail_vertex(loop[k]));
+            found = true;
+          }
+        }
+    return found;
+  }
+
+  std::size_t lowest(const std::vector<std::size_t>& loop) const
+  {
+    auto compare_xy = tr_.geom_traits().compare_xy_2_object();
+    std::size_t best = 0;
+    for(std::size_t p = 1; p < loop.size(); ++p)
+      if(compare_xy(tail_point(loop[p]), tail_point(loop[best])) == SMALLER)
+        best = p;
+    return best;
+  }
+
+  static const void* halfedge_key(const Edge& e)
+  {
+    return static_cast<const char*>(static_cast<const void*>(&*e.first)) + e.second;
+  }
+
+  bool is_open(Face_handle f, int i) const
+  {
+    const Face_handle g = f->neighbor(i);
+    return g == Face_handle() || removed_.contains(&*g);
+  }
+
+  // The open half-edge that follows open_[k] on its cycle, or none.
+  std::size_t next_open(std::size_t k) const
+  {
+    Face_handle f = open_[k].first;
+    const Vertex_handle v = f->vertex(cw(open_[k].second));
+    for(int steps = 0; steps < 1 << 16; ++steps) {
+      const int out = cw(f->index(v)); // the half-edge of f leaving v
+      if(is_open(f, out)) {
+        const std::size_t* at = position_.find(halfedge_key(Edge(f, out)));
+        return at == nullptr || !alive_[*at] ? none : *at;
+      }
+      f = f->neighbor(out);
+    }
+    return none;
+  }
+
+  Vertex_handle tail_vertex(std::size_t k) const { return open_[k].first->vertex(ccw(open_[k].second)); }
+
+  // Splits a cycle at every vertex it passes twice into loops that pass each vertex once, in
+  // one pass: a stack of the half-edges since the last split, and where each tail sits in it
+  // (an entry is current if the stack still holds that vertex there).
+  void split_into_loops(const std::vector<std::size_t>& cycle, std::vector<std::vector<std::size_t>>& loops) const
+  {
+    const std::size_t m = cycle.size();
+    if(m <= 16) { // most holes: a quadratic check, no allocation
+      const void* tails[16];
+      for(std::size_t p = 0; p < m; ++p)
+        tails[p] = &*tail_vertex(cycle[p]);
+      bool repeats = false;
+      for(std::size_t p = 0; p < m && !repeats; ++p)
+        for(std::size_t q = p + 1; q < m && !repeats; ++q)
+          repeats = tails[p] == tails[q];
+      if(!repeats) {
+        loops.push_back(cycle);
+        return;
+      }
+    }
+    std::vector<std::size_t> stack;
+    stack.reserve(m);
+    Address_table<std::size_t> at;
+    for(const std::size_t h : cycle) {
+      const void* v = &*tail_vertex(h);
+      std::size_t* seen = at.insert(v, stack.size()).first;
+      if(*seen < stack.size() && &*tail_vertex(stack[*seen]) == v) {
+        loops.emplace_back(stack.begin() + std::ptrdiff_t(*seen), stack.end());
+        stack.resize(*seen);
+      }
+      *seen = stack.size();
+      stack.push_back(h);
+    }
+    loops.push_back(std::move(stack));
+  }
+
+
+  const Point& tail_point(std::size_t k) const
+  {
+    return open_[k].first->vertex(ccw(open_[k].second))->point();
+  }
+
+  // Carves the faces along a loop that cannot stay (a hole ear clipping cannot fill, an
+  // island) and, for a hole, the stars of its vertices: the faces along it too, since a
+  // vertex where faces meet only at that vertex has several fans and its star reaches only
+  // one. An island (a face dropped over others, a piece hanging by a vertex) loses only the
+  // faces along it: its vertices usually keep their own fans.
+  void widen(const std::vector<std::size_t>& cycle, bool with_stars = true)
+  {
+    for(const std::size_t k : cycle) {
+      remove(open_[k].first);
+      if(with_stars)
+        carve_star(tail_vertex(k));
+    }
+  }
+
+
+  // Fills one hole by ear clipping (ear_clipping.h). The open half-edges run with the kept
+  // faces on their left, so the hole is on their right: its polygon, counterclockwise, is the
+  // cycle reversed.
+  bool fill(const std::vector<std::size_t>& cycle, std::vector<Ear>& ears)
+  {
+    const std::size_t m = cycle.size();
+    // Open half-edge cycle[q] runs from tail t_q to t_(q+1). Reversed, the polygon has vertex
+    // p = t_(m-1-p), and its edge from p to p+1 is cycle[m-2-p] (indices mod m) reversed.
+    std::vector<Vertex_handle>& vertex = scratch_vertices_;
+    std::vector<std::size_t>& edge_after = scratch_edges_;
+    vertex.resize(m);
+    edge_after.resize(m);
+    for(std::size_t p = 0; p < m; ++p) {
+      vertex[p] = tail_vertex(cycle[m - 1 - p]);
+      edge_after[p] = cycle[(2 * m - 2 - p) % m];
+    }
+    ears.clear();
+    std::vector<std::array<std::size_t, 3>>& cut = scratch_ears_;
+    if(!clip_ears(tr_.geom_traits(), m, [&](std::size_t p) -> const Point& { return vertex[p]->point(); }, cut,
+                  scratch_prev_, scratch_next_))
+      return false;
+    ears.reserve(cut.size());
+    for(const auto& t : cut) {
+      // Ear (a, b, c) in vertex slots 0, 1, 2; the edge opposite slot i runs from ends[i][0]
+      // to ends[i][1]: a polygon edge (paired with its open half-edge) or a diagonal (paired
+      // with the other ear on it through a key unique to this hole).
+      Ear e;
+      const std::size_t ends[3][2] = {{t[1], t[2]}, {t[2], t[0]}, {t[0], t[1]}};
+      for(int i = 0; i < 3; ++i) {
+        e.v[i] = vertex[t[i]];
+        const std::size_t from = ends[i][0], to = ends[i][1];
+        e.open[i] = (from + 1) % m == to ? edge_after[from] : none;
+        const std::uint64_t lo = (std::min)(from, to), hi = (std::max)(from, to);
+        e.diagonal[i] = (std::uint64_t(diagonal_base_) << 40) ^ (lo << 20) ^ hi;
+      }
+      ears.push_back(e);
+    }
+    ++diagonal_base_;
+    return true;
+  }
+
+  // The vertices left without a kept face: those whose star was carved, and those all of
+  // whose faces went with their neighbours' stars. Each is reinserted.
+  void collect_isolated_vertices()
+  {
+    Address_table<char> listed;
+    for(std::size_t k = 0; k < open_.size(); ++k)
+      if(alive_[k])
+        listed.insert(&*tail_vertex(k), 0); // cycle vertices keep faces
+    detached_.clear();
+    for(const Face_handle f : removed_list_)
+      for(int i = 0; i < 3; ++i) {
+        const Vertex_handle v = f->vertex(i);
+        if(v != infinite_ && listed.insert(&*v, 0).second)
+          detached_.push_back(v);
+      }
+  }
+
+  // The importer's faces may meet at a vertex in several fans (overlapping predictions): a
+  // vertex of carved faces may keep a whole fan elsewhere, out of reach of its open
+  // half-edges. One pass over the faces left (after the carved ones are deleted) finds
+  // them; they stay, pointing at a face they keep.
+  void keep_vertices_with_other_fans()
+  {
+    if(detached_.empty())
+      return;
+    Address_table<char> candidates;
+    for(const Vertex_handle v : detached_)
+      candidates.insert(&*v, 0);
+    Address_table<char> kept;
+    for(auto f = tds_.faces().begin(); f != tds_.faces().end(); ++f)
+      for(int i = 0; i < 3; ++i) {
+        const Vertex_handle v = f->vertex(i);
+        if(candidates.contains(&*v) && kept.insert(&*v, 0).second)
+          v->set_face(f);
+      }
+    detached_.erase(std::remove_if(detached_.begin(), detached_.end(),
+                                   [&](const Vertex_handle v) { return kept.contains(&*v); }),
+                    detached_.end());
+  }
+
+  void record_undo_log()
+  {
+    undo_.resize(removed_list_.size());
+    for(std::size_t k = 0; k < removed_list_.size(); ++k) {
+      const Face_handle f = removed_list_[k];
+      old_index_.insert(&*f, k);
+      for(int i = 0; i < 3; ++i) {
+        undo_[k].v[i] = f->vertex(i);
+        undo_[k].neighbor[i] = &*f->neighbor(i);
+      }
+    }
+  }
+
+  Triangulation& tr_;
+  Tds& tds_;
+  const Vertex_handle infinite_;
+  const bool keep_undo_log_;
+  bool outer_open_ = false, committed_ = false, may_have_several_fans_ = false;
+  std::size_t rounds_ = 0, removed_finite_ = 0, diagonal_base_ = 0, outer_ = none, groups_ = 0, traced_ = 0;
+
+  Address_table<std::size_t> removed_;   // carved face -> position in removed_list_
+  std::vector<Face_handle> removed_list_;
+  Address_table<char> detached_set_;     // vertices queued for carving their star
+  std::vector<Vertex_handle> pending_, detached_;
+  std::vector<Edge> given_open_;
+  std::vector<Edge> open_;                // every half-edge ever found open, in order
+  std::vector<char> alive_;               // whether it still is (its face not carved since)
+  std::vector<std::size_t> loop_of_;      // its loop, or none
+  Address_table<std::size_t> position_;   // open half-edge -> its position in open_
+  std::vector<Loop> loops_;               // the current ones are not dead
+
+  std::vector<Face_handle> created_;
+  Address_table<char> created_set_;
+  std::vector<Undo_entry> undo_;
+  // Scratch space of fill(), reused across holes.
+  std::vector<Vertex_handle> scratch_vertices_;
+  std::vector<std::size_t> scratch_edges_, scratch_prev_, scratch_next_;
+  std::vector<std::array<std::size_t, 3>> scratch_ears_;
+  Address_table<std::size_t> old_index_;
+};
+
+// Overlaps that edge pairing cannot see (the importer, after it left out faces on the same
+// side of an edge as others: a flap of faces folded over the mesh but linked to it edge by
+// edge): around a vertex whose faces close up, counterclockwise faces each turn by less than
+// pi, so the fan winds around the vertex as many times as it passes the direction 0, counted
+// exactly as in is_convex_ccw_cycle(). A vertex whose closed fan winds more than once has
+// faces covering its neighbourhood twice: its star is carved. One pass over the vertices,
+// about two orientation and coordinate tests per face.
+template <class Triangulation>
+void carve_vertices_wound_twice(const Triangulation& tr, Carve_repair<Triangulation>& carve)
+{
+  using Face_handle = typename Triangulation::Face_handle;
+  const auto& gt = tr.geom_traits();
+  auto compare_x = gt.compare_x_2_object();
+  auto compare_y = gt.compare_y_2_object();
+  for(auto v = tr.tds().vertices().begin(); v != tr.tds().vertices().end(); ++v) {
+    const Face_handle start = v->face();
+    if(start == Face_handle() || v == tr.infinite_vertex())
+      continue;
+    const auto& c = v->point();
+    auto upper = [&](const auto& p) {
+      const Comparison_result cy = compare_y(p, c);
+      return cy == LARGER || (cy == EQUAL && compare_x(p, c) == LARGER);
+    };
+    std::size_t wraps = 0, steps = 0;
+    Face_handle f = start;
+    bool closed = true;
+    do {
+      const int i = f->index(v);
+      // Around v counterclockwise, f turns from vertex ccw(i) to vertex cw(i).
+      if(!upper(f->vertex(ccw(i))->point()) && upper(f->vertex(cw(i))->point()))
+        ++wraps;
+      f = f->neighbor(ccw(i));
+      if(f == Face_handle() || ++steps > 4096) {
+        closed = false;
+        break;
+      }
+    } while(f != start);
+    if(closed && wraps != 1)
+      carve.carve_star(typename Triangulation::Vertex_handle(v));
+  }
+}
+
+} // namespace internal
+} // namespace Delaunay_from_prediction
+} // namespace CGAL
+
+#endif // CGAL_DELAUNAY_FROM_PREDICTION_INTERNAL_CARVE_REPAIR_H

@@ -1,0 +1,905 @@
+// Copyright (c) 2026 Delaunay_from_prediction contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Author(s): Delaunay_from_prediction contributors
+//
+// Local repair (named parameter `strategy`): predictions that are not triangulations of their
+// points are repaired where they are damaged instead of being rebuilt from scratch. Bad faces
+// are carved out (inverted or flat faces and the stars of their vertices in make_delaunay;
+// degenerate, repeated or overlapping faces and whatever surrounds a non-simple hole in
+// delaunay_from_prediction), the holes are retriangulated, the vertices left without a face
+// are reinserted, then Lawson flips finish the job.
+//
+// Every call is made with each strategy (no parameter, automatic, carve, flips, rebuild) and
+// its result must be exactly CGAL's Delaunay_triangulation_2 built from scratch, whatever
+// path was taken. On top of that:
+//  - a prediction that is a triangulation is handled as before: nothing carved or refilled;
+//  - with small damage at moderate n, the carving strategies (default, automatic, carve) do
+//    not fall back, carve where faces are inverted or repeated, and reinsert a number of points
+//    proportional to the damage (at most 12 per damaged face, plus the unused points);
+//  - strategy(flips) falls back on any prediction that is not a triangulation; strategy(rebuild)
+//    always falls back and reinserts every point.
+// Cases: make_delaunay after Gaussian moves (0.001 to 0.1 of the mean spacing) of every vertex
+// of a DT / Triangulation_2, with and without info (handles and info kept); delaunay_from_prediction
+// with interior holes, faces missing on the hull, unused points, repeated faces, self-crossing
+// labelings, random triples added, and the DT of moved points; degenerate inputs (co-circular
+// grids and lattice circles, collinear sets, duplicates, coordinates at 1e15 and 1e-15) where
+// only exactness is asked; Simple_cartesian<double> (must terminate with a valid
+// triangulation); Epeck. Every group runs in a child process with a time limit, so a crash or
+// an endless loop is a failure of that group only.
+
+#include <CGAL/Delaunay_from_prediction_2.h> // first: the header is self-contained
+
+#include "test_util.h"
+
+#include <CGAL/Delaunay_from_prediction/prediction_models.h>
+#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Simple_cartesian.h>
+
+#include <csignal>
+#include <cstdint>
+#include <functional>
+
+using namespace dfp_test;
+using Epick = CGAL::Exact_predicates_inexact_constructions_kernel;
+using Epeck = CGAL::Exact_predicates_exact_constructions_kernel;
+using Inexact = CGAL::Simple_cartesian<double>;
+using Random = DFP::internal::Splitmix64;
+
+namespace {
+
+// ---------------------------------------------------------------------------------------------
+// Strategies
+// ---------------------------------------------------------------------------------------------
+
+enum class Mode { defaults, automatic, carve, flips, rebuild };
+const Mode all_modes[] = {Mode::defaults, Mode::automatic, Mode::carve, Mode::flips, Mode::rebuild};
+
+const char* name_of(Mode m)
+{
+  switch(m) {
+  case Mode::defaults: return "no parameter";
+  case Mode::automatic: return "automatic";
+  case Mode::carve: return "carve";
+  case Mode::flips: return "flips";
+  default: return "rebuild";
+  }
+}
+
+bool carves(Mode m) { return m == Mode::defaults || m == Mode::automatic || m == Mode::carve; }
+
+// Calls body(np) with the named parameters of the mode.
+template <class F>
+DFP::Statistics with_strategy(Mode m, const F& body)
+{
+  namespace P = DFP::parameters;
+  switch(m) {
+  case Mode::defaults: return body(P::default_values());
+  case Mode::automatic: return body(P::strategy(DFP::Strategy::automatic));
+  case Mode::carve: return body(P::strategy(DFP::Strategy::carve));
+  case Mode::flips: return body(P::strategy(DFP::Strategy::flips));
+  default: return body(P::strategy(DFP::Strategy::rebuild));
+  }
+}
+
+std::string describe(const DFP::Statistics& s)
+{
+  std::ostringstream out;
+  out << "faces_in=" << s.faces_in << " certified=" << s.faces_certified << " flips=" << s.flips
+      << " reinserted=" << s.points_reinserted << " fell_back=" << s.fell_back << " tested="
+      << s.edges_tested << " not_ld=" << s.edges_not_locally_delaunay << " unused=" << s.points_unused
+      << " duplicates=" << s.duplicate_points << " reordered=" << s.input_reordered
+      << " carved=" << s.faces_carved << " holes=" << s.holes_refilled << " rounds=" << s.carve_rounds
+      << " reason='" << s.fallback_reason << "'";
+  return out.str();
+}
+
+// What a prediction is expected to make the call do.
+struct Expect
+{
+  std::size_t damaged = 0;        // damaged faces: inverted, flat, deleted, repeated, crossing, overlapped
+                                  // (with must_repair: points_reinserted <= 12 damaged + unused)
+  bool valid = false;             // a triangulation of its vertices: nothing to carve or refill
+  bool not_triangulation = false; // strategy(flips) must fall back
+  bool carve_expected = false;    // the carving strategies must carve (faces_carved > 0)
+  bool holes_expected = false;    // ... and refill holes (holes_refilled > 0)
+  bool must_repair = false;       // ... and must not fall back (small damage)
+};
+
+// Checks shared by both functions and every strategy; `reinsert_bound` is what the
+// proportionality asks of points_reinserted.
+void check_strategy(Mode m, const DFP::Statistics& s, const Expect& e, std::size_t n,
+                    std::size_t reinsert_bound)
+{
+  DFP_CHECK_MSG(std::string(s.fallback_reason).empty() == !s.fell_back, describe(s));
+  DFP_CHECK_MSG(s.faces_certified <= s.faces_in, describe(s));
+  DFP_CHECK_MSG(s.faces_carved <= s.faces_in, describe(s));
+  if(s.fell_back) {
+    DFP_CHECK_MSG(s.points_reinserted == n, describe(s) << ", n = " << n);
+    DFP_CHECK_MSG(s.faces_certified == 0, describe(s));
+  } else {
+    DFP_CHECK_MSG(s.edges_not_locally_delaunay <= s.edges_tested, describe(s));
+  }
+  if(carves(m)) {
+    if(e.must_repair)
+      DFP_CHECK_MSG(!s.fell_back, describe(s));
+    if(!s.fell_back) {
+      if(e.valid)
+        DFP_CHECK_MSG(s.faces_carved == 0 && s.holes_refilled == 0 && s.carve_rounds == 0, describe(s));
+      if(e.carve_expected)
+        DFP_CHECK_MSG(s.faces_carved > 0, describe(s));
+      if(e.holes_expected)
+        DFP_CHECK_MSG(s.holes_refilled > 0, describe(s));
+      if(e.must_repair) // small damage: the repair stays local
+        DFP_CHECK_MSG(s.points_reinserted <= reinsert_bound,
+                      describe(s) << "; bound " << reinsert_bound << " (" << e.damaged << " damaged faces)");
+    }
+  } else if(m == Mode::flips) {
+    if(e.not_triangulation)
+      DFP_CHECK_MSG(s.fell_back, describe(s));
+    if(e.valid && e.must_repair)
+      DFP_CHECK_MSG(!s.fell_back, describe(s));
+    DFP_CHECK_MSG(s.faces_carved == 0 && s.holes_refilled == 0, describe(s));
+  } else { // rebuild
+    DFP_CHECK_MSG(s.fell_back, describe(s));
+    DFP_CHECK_MSG(s.points_reinserted == n, describe(s) << ", n = " << n);
+    DFP_CHECK_MSG(std::string(s.fallback_reason) != "", describe(s));
+    DFP_CHECK_MSG(s.faces_certified == 0 && s.faces_carved == 0, describe(s));
+  }
+}
+
+bool verbose() { return std::getenv("DFP_TEST_VERBOSE") != nullptr; }
+
+// ---------------------------------------------------------------------------------------------
+// Isolation: each group runs in a child process with a time limit.
+// ---------------------------------------------------------------------------------------------
+
+template <class F>
+void isolated(const std::string& what, const F& body, unsigned seconds = 120)
+{
+#if defined(__unix__) || defined(__APPLE__)
+  std::cout.flush();
+  std::cerr.flush();
+  const pid_t child = fork();
+  if(child == 0) {
+    alarm(seconds); // an endless loop is killed by SIGALRM
+    const int before = failures();
+    {
+      Scope scope(what);
+      DFP_RUN(body());
+    }
+    std::cout.flush();
+    std::cerr.flush();
+    std::_Exit(std::min(failures() - before, 100));
+  }
+  if(child > 0) {
+    int status = 0;
+    waitpid(child, &status, 0);
+    if(WIFEXITED(status)) {
+      failures() += WEXITSTATUS(status); // the child printed them
+    } else {
+      Scope scope(what);
+      report_failure(__FILE__, __LINE__, "the group ran to its end",
+                     WIFSIGNALED(status) ? (WTERMSIG(status) == SIGALRM
+                                                ? std::string("timed out after ") + std::to_string(seconds) + " s"
+                                                : "crashed with signal " + std::to_string(WTERMSIG(status)))
+                                         : std::string("stopped abnormally"));
+    }
+    return;
+  }
+#endif
+  Scope scope(what);
+  DFP_RUN(body());
+}
+
+// ---------------------------------------------------------------------------------------------
+// Point sets and predictions, drawn with the package's random source
+// ---------------------------------------------------------------------------------------------
+
+XYs uniform_xy(std::size_t n, std::uint64_t seed, double lo = 0., double hi = 1.)
+{
+  Random random{seed};
+  XYs xy(n);
+  for(XY& p : xy) {
+    const double x = lo + (hi - lo) * random.uniform();
+    p = {x, lo + (hi - lo) * random.uniform()};
+  }
+  return xy;
+}
+
+template <class T>
+void shuffle_with(std::vector<T>& v, Random& random)
+{
+  for(std::size_t i = v.size(); i > 1; --i)
+    std::swap(v[i - 1], v[random.below(i)]);
+}
+
+XYs grid_xy(int w, int h, std::uint64_t seed)
+{
+  XYs xy;
+  for(int i = 0; i < w; ++i)
+    for(int j = 0; j < h; ++j)
+      xy.push_back({double(i), double(j)});
+  Random random{seed};
+  shuffle_with(xy, random);
+  return xy;
+}
+
+// Mean spacing sqrt(area of the bounding box / n).
+double mean_spacing(const XYs& xy)
+{
+  double x0 = xy[0].x, x1 = x0, y0 = xy[0].y, y1 = y0;
+  for(const XY& p : xy) {
+    x0 = std::min(x0, p.x);
+    x1 = std::max(x1, p.x);
+    y0 = std::min(y0, p.y);
+    y1 = std::max(y1, p.y);
+  }
+  return std::sqrt((x1 - x0) * (y1 - y0) / double(xy.size()));
+}
+
+XYs gaussian_moved(XYs xy, double sigma, std::uint64_t seed)
+{
+  Random random{seed};
+  for(XY& p : xy) {
+    const double dx = sigma * random.normal();
+    p = {p.x + dx, p.y + sigma * random.normal()};
+  }
+  return xy;
+}
+
+template <class Point>
+XYs to_xy(const std::vector<Point>& points)
+{
+  XYs xy;
+  for(const Point& p : points)
+    xy.push_back({CGAL::to_double(p.x()), CGAL::to_double(p.y())});
+  return xy;
+}
+
+using Edge = std::pair<std::size_t, std::size_t>;
+Edge edge_of(std::size_t a, std::size_t b) { return {std::min(a, b), std::max(a, b)}; }
+
+// Edges used by exactly one face.
+std::set<Edge> boundary_edges(const Faces& faces)
+{
+  std::map<Edge, int> uses;
+  for(const Face& f : faces)
+    for(int j = 0; j < 3; ++j)
+      ++uses[edge_of(f[j], f[(j + 1) % 3])];
+  std::set<Edge> boundary;
+  for(const auto& [e, count] : uses)
+    if(count == 1)
+      boundary.insert(e);
+  return boundary;
+}
+
+bool has_boundary_edge(const Face& f, const std::set<Edge>& boundary)
+{
+  for(int j = 0; j < 3; ++j)
+    if(boundary.count(edge_of(f[j], f[(j + 1) % 3])))
+      return true;
+  return false;
+}
+
+// Splits `faces` into kept and deleted: each face that `eligible` accepts is deleted with
+// probability `fraction`.
+template <class Eligible>
+Faces delete_some(const Faces& faces, double fraction, std::uint64_t seed, const Eligible& eligible,
+                  std::size_t& deleted)
+{
+  Random random{seed};
+  Faces kept;
+  deleted = 0;
+  for(const Face& f : faces)
+    if(eligible(f) && random.uniform() < fraction)
+      ++deleted;
+    else
+      kept.push_back(f);
+  return kept;
+}
+
+std::array<std::size_t, 3> sorted_triple(Face f)
+{
+  std::sort(f.begin(), f.end());
+  return f;
+}
+
+// Faces of `faces` that are not faces of `reference` (as sets of indices).
+std::size_t faces_not_in(const Faces& faces, const Faces& reference)
+{
+  std::set<std::array<std::size_t, 3>> ref;
+  for(const Face& f : reference)
+    ref.insert(sorted_triple(f));
+  std::size_t count = 0;
+  for(const Face& f : faces)
+    count += ref.count(sorted_triple(f)) ? 0 : 1;
+  return count;
+}
+
+// Faces that are not counterclockwise on `points` (inverted or flat).
+template <class Point>
+std::size_t not_ccw(const Faces& faces, const std::vector<Point>& points)
+{
+  std::size_t count = 0;
+  for(const Face& f : faces)
+    count += CGAL::orientation(points[f[0]], points[f[1]], points[f[2]]) != CGAL::LEFT_TURN;
+  return count;
+}
+
+// True if the interiors of two counterclockwise triangles meet (no edge of either separates them).
+template <class Point>
+bool interiors_meet(const std::array<Point, 3>& a, const std::array<Point, 3>& b)
+{
+  auto separates = [](const std::array<Point, 3>& s, const std::array<Point, 3>& o) {
+    for(int i = 0; i < 3; ++i) {
+      bool outside = true;
+      for(const Point& p : o)
+        outside = outside && CGAL::orientation(s[i], s[(i + 1) % 3], p) != CGAL::LEFT_TURN;
+      if(outside)
+        return true;
+    }
+    return false;
+  };
+  return !separates(a, b) && !separates(b, a);
+}
+
+template <class Point>
+std::array<Point, 3> ccw_triangle(const Face& f, const std::vector<Point>& points)
+{
+  std::array<Point, 3> t = {points[f[0]], points[f[1]], points[f[2]]};
+  if(CGAL::orientation(t[0], t[1], t[2]) == CGAL::RIGHT_TURN)
+    std::swap(t[1], t[2]);
+  return t;
+}
+
+// ---------------------------------------------------------------------------------------------
+// delaunay_from_prediction
+// ---------------------------------------------------------------------------------------------
+
+// The statistics that must hold for any call (the new meaning of points_reinserted: unused
+// points plus the vertices of carved faces).
+template <class DT>
+void check_dfp_statistics(const DFP::Statistics& s, const Faces& faces,
+                          const std::vector<typename DT::Point>& points, const DT& dt)
+{
+  using Point = typename DT::Point;
+  const std::size_t n = points.size();
+  DFP_CHECK_MSG(s.faces_in == faces.size(), describe(s) << " vs " << faces.size());
+  DFP_CHECK_MSG(s.duplicate_points + dt.number_of_vertices() == n,
+                describe(s) << "; " << dt.number_of_vertices() << " vertices, " << n << " points");
+  if(s.fell_back)
+    return;
+  // Points used by no face are unused; a point used only by degenerate faces may count too.
+  Faces proper;
+  for(const Face& f : faces)
+    if(CGAL::orientation(points[f[0]], points[f[1]], points[f[2]]) != CGAL::COLLINEAR)
+      proper.push_back(f);
+  DFP_CHECK_MSG(s.points_unused >= n - used_indices(faces) && s.points_unused <= n - used_indices(proper),
+                describe(s) << "; " << n - used_indices(faces) << " points in no face, "
+                            << n - used_indices(proper) << " in no proper face");
+  DFP_CHECK_MSG(s.points_reinserted >= s.points_unused, describe(s));
+  if(s.faces_carved == 0)
+    DFP_CHECK_MSG(s.points_reinserted == s.points_unused, describe(s));
+  // A certified face is a face of the result.
+  const Geometry<Point> result = geometry_of(dt);
+  std::vector<std::array<Point, 3>> predicted;
+  for(const Face& f : faces)
+    if(CGAL::orientation(points[f[0]], points[f[1]], points[f[2]]) != CGAL::COLLINEAR)
+      predicted.push_back(canonical(ccw_triangle(f, points)));
+  std::sort(predicted.begin(), predicted.end());
+  predicted.erase(std::unique(predicted.begin(), predicted.end()), predicted.end());
+  const std::size_t in_result = predicted.size() - count_missing(predicted, result.faces);
+  DFP_CHECK_MSG(s.faces_certified <= in_result, describe(s) << "; " << in_result << " predicted faces in the result");
+}
+
+// Runs every strategy on the prediction; the result must be CGAL's DT each time.
+template <class DT>
+void dfp_case(const std::string& label, const std::vector<typename DT::Point>& points,
+              const Faces& faces, const Expect& e)
+{
+  using K = typename DT::Geom_traits;
+  Scope scope(label);
+  const std::size_t n = points.size();
+  const std::size_t unused = n - used_indices(faces);
+  for(Mode m : all_modes) {
+    Scope sm("strategy ", name_of(m));
+    DT dt;
+    dt.insert(make_point<K>(1e3, 1e3)); // must be cleared
+    dt.insert(make_point<K>(-1e3, 1e3));
+    dt.insert(make_point<K>(0., -1e3));
+    const DFP::Statistics s = with_strategy(m, [&](const auto& np) {
+      return DFP::delaunay_from_prediction(points, faces, dt, np);
+    });
+    if(verbose())
+      std::cout << where() << ": " << describe(s) << std::endl;
+    check_is_cgal_delaunay(dt, points);
+    check_dfp_statistics(s, faces, points, dt);
+    check_strategy(m, s, e, n, 12 * e.damaged + unused);
+  }
+}
+
+// Uniform points and predictions with local damage.
+template <class DT>
+void damaged_predictions(const std::string& name, const std::vector<typename DT::Point>& points,
+                         std::uint64_t seed, bool with_moves)
+{
+  using Point = typename DT::Point;
+  const std::size_t n = points.size();
+  const Faces dt_faces = DFP::delaunay_triangles(points);
+  const std::set<Edge> hull = boundary_edges(dt_faces);
+  std::set<std::size_t> hull_vertices;
+  for(const Edge& e : hull) {
+    hull_vertices.insert(e.first);
+    hull_vertices.insert(e.second);
+  }
+  Scope scope(name, ", n = ", n);
+  isolated("valid triangulations", [&] {
+    {
+      Expect e;
+      e.valid = e.must_repair = true;
+      Faces shuffled_faces = dt_faces;
+      Random random{seed};
+      shuffle_with(shuffled_faces, random);
+      dfp_case<DT>("the DT, shuffled", points, shuffled_faces, e);
+      const Faces flipped = DFP::k_flip_prediction(points, n / 50, seed + 1);
+      dfp_case<DT>("the DT after n/50 flips", points, flipped, e);
+    }
+    {
+      Expect e;
+      e.valid = e.must_repair = true;
+      Random random{seed + 2};
+      std::vector<Point> subset;
+      for(const Point& p : points)
+        if(random.uniform() < 0.9)
+          subset.push_back(p);
+      // The DT of 90% of the points, re-indexed into `points` (the rest unused).
+      std::map<Point, std::size_t> index;
+      for(std::size_t i = 0; i < n; ++i)
+        index.emplace(points[i], i);
+      Faces faces = DFP::delaunay_triangles(subset);
+      for(Face& f : faces)
+        for(std::size_t& i : f)
+          i = index.at(subset[i]);
+      dfp_case<DT>("the DT of 90% of the points (unused points)", points, faces, e);
+    }
+  });
+  isolated("holes", [&] {
+    for(double fraction : {0.01, 0.1}) {
+      std::ostringstream label;
+      label << "delete_faces(" << fraction << ") (interior and hull)";
+      const Faces kept = DFP::delete_faces(dt_faces, fraction, seed + 3);
+      Expect e;
+      e.damaged = dt_faces.size() - kept.size();
+      e.not_triangulation = e.holes_expected = e.must_repair = true;
+      dfp_case<DT>(label.str(), points, kept, e);
+    }
+    {
+      std::size_t deleted = 0;
+      const Faces kept = delete_some(dt_faces, 0.1, seed + 4,
+                                     [&](const Face& f) { return !has_boundary_edge(f, hull); }, deleted);
+      Expect e;
+      e.damaged = deleted;
+      e.not_triangulation = e.holes_expected = e.must_repair = true;
+      dfp_case<DT>("10% of the interior faces deleted", points, kept, e);
+    }
+    {
+      std::size_t deleted = 0;
+      const Faces kept = delete_some(dt_faces, 0.5, seed + 5,
+                                     [&](const Face& f) { return has_boundary_edge(f, hull); }, deleted);
+      Expect e;
+      e.damaged = deleted;
+      e.must_repair = true;
+      DFP_CHECK(deleted > 0);
+      dfp_case<DT>("half of the faces on a hull edge deleted", points, kept, e);
+    }
+    {
+      // Peel: every face with a hull vertex goes, the hull vertices are left unused.
+      std::size_t deleted = 0;
+      const Faces kept = delete_some(dt_faces, 1.1, seed, [&](const Face& f) {
+        return hull_vertices.count(f[0]) || hull_vertices.count(f[1]) || hull_vertices.count(f[2]);
+      }, deleted);
+      Expect e;
+      e.damaged = deleted;
+      e.must_repair = true;
+      DFP_CHECK(n - used_indices(kept) >= hull_vertices.size());
+      dfp_case<DT>("every face at a hull vertex deleted (hull vertices unused)", points, kept, e);
+    }
+    {
+      // Unused points and holes together.
+      Random random{seed + 6};
+      std::vector<bool> drop(n);
+      for(std::size_t i = 0; i < n; ++i)
+        drop[i] = random.uniform() < 0.02;
+      std::size_t deleted = 0;
+      const Faces kept = delete_some(dt_faces, 1.1, seed, [&](const Face& f) {
+        return drop[f[0]] || drop[f[1]] || drop[f[2]];
+      }, deleted);
+      Expect e;
+      e.damaged = deleted;
+      e.not_triangulation = e.holes_expected = e.must_repair = true;
+      dfp_case<DT>("the stars of 2% of the points deleted (their centres unused)", points, kept, e);
+    }
+  });
+  isolated("repeated faces", [&] {
+    {
+      Random random{seed + 7};
+      Faces faces = dt_faces;
+      std::size_t copies = 0;
+      for(const Face& f : dt_faces)
+        if(random.uniform() < 0.01) {
+          Face g = f;
+          if(copies % 3 == 1)
+            std::swap(g[1], g[2]); // reversed
+          else if(copies % 3 == 2)
+            std::rotate(g.begin(), g.begin() + 1, g.end());
+          faces.push_back(g);
+          ++copies;
+        }
+      shuffle_with(faces, random);
+      DFP_CHECK(copies > 0);
+      Expect e;
+      e.damaged = 2 * copies;
+      e.not_triangulation = e.carve_expected = e.must_repair = true;
+      dfp_case<DT>("1% of the faces listed twice", points, faces, e);
+    }
+    {
+      Expect e;
+      e.damaged = dt_faces.size();
+      e.not_triangulation = true; // no small damage: exactness only
+      dfp_case<DT>("every face listed twice", points, listed_twice(dt_faces), e);
+    }
+  });
+  isolated("crossing faces", [&] {
+    for(std::size_t swaps : {std::size_t(5), std::size_t(20)}) {
+      const Faces faces = DFP::self_crossing_prediction(points, swaps, seed + 8);
+      Expect e;
+      e.damaged = faces_not_in(faces, dt_faces);
+      e.not_triangulation = e.carve_expected = true;
+      // 20 swaps among 2000 clustered points fold about 1% of the faces, near the carving
+      // budget (n/8 faces): only 5 swaps must stay local everywhere.
+      e.must_repair = swaps == 5 || n >= 5000;
+      DFP_CHECK(e.damaged > 0);
+      dfp_case<DT>("self_crossing_prediction, " + std::to_string(swaps) + " swaps", points, faces, e);
+    }
+    {
+      const Faces extra = DFP::random_triples(n, 3, seed + 9);
+      Faces faces = dt_faces;
+      Expect e;
+      for(const Face& t : extra) {
+        faces.push_back(t);
+        e.damaged += 1;
+        if(CGAL::orientation(points[t[0]], points[t[1]], points[t[2]]) == CGAL::COLLINEAR)
+          continue;
+        const auto a = ccw_triangle(t, points);
+        for(const Face& f : dt_faces)
+          e.damaged += interiors_meet(a, ccw_triangle(f, points)) ? 1 : 0;
+      }
+      e.not_triangulation = e.carve_expected = e.must_repair = true;
+      dfp_case<DT>("the DT and 3 random triples", points, faces, e);
+    }
+  });
+  if(with_moves)
+    isolated("the DT of moved points", [&] {
+      for(double noise : {0.001, 0.01, 0.05, 0.1}) {
+        const Faces faces = DFP::moved_points_prediction(points, noise, seed + 10);
+        Expect e;
+        e.damaged = not_ccw(faces, points);
+        e.not_triangulation = e.carve_expected = e.damaged > 0;
+        // Index triples carry no orientation to untangle: inverted faces are left out and
+        // their surroundings carved, which the budget allows up to about 2% of the faces
+        // inverted (noise 0.05); at 0.1 (about 3%) the call may rebuild. Exact either way.
+        e.must_repair = noise <= 0.05;
+        if(noise >= 0.05)
+          DFP_CHECK_MSG(e.damaged > 0, "no inverted face at noise " << noise);
+        std::ostringstream label;
+        label << "moved_points_prediction(" << noise << "), " << e.damaged << " faces inverted or flat";
+        dfp_case<DT>(label.str(), points, faces, e);
+      }
+    });
+}
+
+// ---------------------------------------------------------------------------------------------
+// make_delaunay
+// ---------------------------------------------------------------------------------------------
+
+// Builds Tr on `start` (made Delaunay), applies `move` to the handles, then calls make_delaunay
+// with each strategy on a fresh copy. `expect_inverted`: the moves must invert faces.
+template <class Tr>
+void md_case(const std::string& label, const std::vector<typename Tr::Point>& start,
+             const std::function<void(const Handles<Tr>&)>& move, bool must_repair,
+             bool expect_inverted, bool exact = true)
+{
+  Scope scope(label);
+  const std::size_t n = start.size();
+  for(Mode m : all_modes) {
+    Scope sm("strategy ", name_of(m));
+    Tr tr;
+    Handles<Tr> handles;
+    build(tr, start, handles);
+    DFP::make_delaunay(tr, DFP::parameters::max_flips(100 * n + 100)); // a Triangulation_2 too
+    move(handles);
+    const std::vector<typename Tr::Point> points = current_points(handles);
+    const std::size_t inverted = inverted_faces(tr);
+    const std::size_t faces_before = tr.dimension() == 2 ? tr.number_of_faces() : 0;
+    if(m == Mode::defaults && expect_inverted)
+      DFP_CHECK_MSG(inverted > 0, "the moves inverted no face");
+    const DFP::Statistics s = with_strategy(m, [&](const auto& np) { return DFP::make_delaunay(tr, np); });
+    if(verbose())
+      std::cout << where() << ": " << inverted << " inverted: " << describe(s) << std::endl;
+    if(!exact) {
+      DFP_CHECK(tr.is_valid());
+      DFP_CHECK(tr.number_of_vertices() == n);
+      check_handles(tr, handles, points);
+      continue;
+    }
+    check_handles(tr, handles, points);
+    check_is_cgal_delaunay(tr, points);
+    DFP_CHECK_MSG(s.faces_in == faces_before, describe(s) << " vs " << faces_before);
+    if(!s.fell_back) {
+      DFP_CHECK_MSG(s.points_reinserted <= n, describe(s));
+      if(s.faces_carved == 0)
+        DFP_CHECK_MSG(s.points_reinserted == 0, describe(s));
+    }
+    Expect e;
+    e.damaged = inverted;
+    e.valid = inverted == 0 && tr.dimension() == 2;
+    e.not_triangulation = e.carve_expected = inverted > 0;
+    e.must_repair = must_repair;
+    check_strategy(m, s, e, n, 12 * inverted);
+  }
+}
+
+template <class Tr>
+std::function<void(const Handles<Tr>&)> gaussian_moves(double sigma, std::uint64_t seed)
+{
+  using K = typename Tr::Geom_traits;
+  return [=](const Handles<Tr>& handles) {
+    Random random{seed};
+    for(const auto& v : handles) {
+      const double dx = sigma * random.normal(), dy = sigma * random.normal();
+      v->set_point(make_point<K>(CGAL::to_double(v->point().x()) + dx, CGAL::to_double(v->point().y()) + dy));
+    }
+  };
+}
+
+// Moves handle i to target[i].
+template <class Tr>
+std::function<void(const Handles<Tr>&)> moves_to(const std::vector<typename Tr::Point>& target)
+{
+  return [=](const Handles<Tr>& handles) {
+    for(std::size_t i = 0; i < handles.size(); ++i)
+      handles[i]->set_point(target[i]);
+  };
+}
+
+template <class Tr>
+void moved_triangulations(const std::string& name, const XYs& xy, std::uint64_t seed,
+                          const std::vector<double>& sigmas)
+{
+  using K = typename Tr::Geom_traits;
+  const auto points = to_points<K>(xy);
+  const double spacing = mean_spacing(xy);
+  isolated(name + ", n = " + std::to_string(xy.size()), [&] {
+    for(double sigma : sigmas) {
+      std::ostringstream label;
+      label << "every vertex moved by " << sigma << " x the mean spacing";
+      md_case<Tr>(label.str(), points, gaussian_moves<Tr>(sigma * spacing, seed), true, sigma >= 0.05);
+    }
+  });
+}
+
+// ---------------------------------------------------------------------------------------------
+// Degenerate inputs: exactness whatever the path
+// ---------------------------------------------------------------------------------------------
+
+template <class K>
+void degenerate_dfp(const std::string& name, const XYs& xy, std::uint64_t seed)
+{
+  using DT = DT_with_info<K>;
+  const auto points = to_points<K>(xy);
+  isolated(name + " (" + std::to_string(xy.size()) + " points), delaunay_from_prediction", [&] {
+    const Faces dt_faces = DFP::delaunay_triangles(points);
+    Expect e; // exactness and consistency only
+    dfp_case<DT>("the DT", points, dt_faces, e);
+    for(double noise : {0.05, 0.3}) {
+      std::ostringstream label;
+      label << "moved_points_prediction(" << noise << ")";
+      dfp_case<DT>(label.str(), points, DFP::moved_points_prediction(points, noise, seed), e);
+    }
+    if(!dt_faces.empty()) {
+      dfp_case<DT>("delete_faces(0.05)", points, DFP::delete_faces(dt_faces, 0.05, seed + 1), e);
+      Faces twice = dt_faces;
+      for(std::size_t k = 0; k < dt_faces.size(); k += 17)
+        twice.push_back(dt_faces[k]);
+      dfp_case<DT>("some faces listed twice", points, twice, e);
+      dfp_case<DT>("self_crossing_prediction(5)", points, DFP::self_crossing_prediction(points, 5, seed + 2), e);
+    }
+  });
+}
+
+// The prediction is the DT of other positions of the same points.
+template <class K>
+void degenerate_dfp_moved(const std::string& name, const XYs& xy, const XYs& predicted_from)
+{
+  using DT = DT_with_info<K>;
+  const auto points = to_points<K>(xy);
+  isolated(name + " (" + std::to_string(xy.size()) + " points), delaunay_from_prediction", [&] {
+    Expect e;
+    dfp_case<DT>("the DT of the other positions", points, DFP::delaunay_triangles(to_points<K>(predicted_from)), e);
+  });
+}
+
+template <class K>
+void degenerate_md(const std::string& name, const XYs& from, const XYs& to)
+{
+  using Tr = DT_with_info<K>;
+  const auto start = to_points<K>(from);
+  const auto target = to_points<K>(to);
+  isolated(name + " (" + std::to_string(from.size()) + " points), make_delaunay", [&] {
+    md_case<Tr>("DT with info", start, moves_to<Tr>(target), false, false);
+    md_case<T2_plain<K>>("Triangulation_2 without info", start, moves_to<T2_plain<K>>(target), false, false);
+  });
+}
+
+void degenerate_inputs()
+{
+  using K = Epick;
+  const XYs grid = grid_xy(30, 30, 11);
+  const XYs jittered_grid = gaussian_moved(grid, 0.2, 12);
+  const XYs tiny_jitter = gaussian_moved(grid, 1e-9, 13);
+  degenerate_dfp<K>("integer grid (co-circular)", grid, 14);
+  degenerate_dfp_moved<K>("integer grid, predicted from the grid jittered by 0.2", grid, jittered_grid);
+  degenerate_dfp_moved<K>("grid jittered by 1e-9, predicted from the exact grid", tiny_jitter, grid);
+  degenerate_md<K>("jittered grid snapped onto the integer grid", jittered_grid, grid);
+  degenerate_md<K>("integer grid moved by 0.6 (inverting faces)", grid, gaussian_moved(grid, 0.6, 15));
+  degenerate_md<K>("grid jittered by 1e-9 moved onto the exact grid", tiny_jitter, grid);
+
+  {
+    CGAL::Random rng(17);
+    const XYs circle = lattice_circle_points(1105, rng, 65);
+    degenerate_dfp<K>("lattice points of two concentric circles (co-circular)", circle, 18);
+    degenerate_md<K>("lattice circles, from jittered positions", gaussian_moved(circle, 20., 19), circle);
+  }
+  {
+    // Collinear: points on y = 2x + 1; predictions from positions off the line (every face flat).
+    XYs line;
+    for(int i = 0; i < 200; ++i)
+      line.push_back({double(i - 100), 2. * double(i - 100) + 1.});
+    Random random{20};
+    shuffle_with(line, random);
+    const XYs off_line = gaussian_moved(line, 0.5, 21);
+    degenerate_dfp<K>("collinear", line, 22);
+    degenerate_dfp_moved<K>("collinear, predicted from positions off the line", line, off_line);
+    degenerate_md<K>("points moved onto a line (dimension 2 -> 1)", off_line, line);
+    // A line of points and a few points off it: 2D, many collinear vertices.
+    XYs mixed = line;
+    for(std::size_t k = 0; k < 10; ++k)
+      mixed[k * 7] = {mixed[k * 7].x + 3., mixed[k * 7].y - 40. + double(k)};
+    degenerate_dfp<K>("collinear, 10 points moved off the line", mixed, 23);
+    degenerate_dfp_moved<K>("collinear with 10 off, predicted from all off the line", mixed,
+                            gaussian_moved(mixed, 0.5, 24));
+    degenerate_md<K>("nearly collinear moved onto the line with 10 off", off_line, mixed);
+    degenerate_dfp<K>("nearly collinear (1e-12 off the line)", gaussian_moved(line, 1e-12, 25), 26);
+  }
+  {
+    // Duplicates: moved predictions separate the copies, whose faces are degenerate.
+    XYs xy = uniform_xy(1000, 27);
+    for(std::size_t k = 0; k < 100; ++k)
+      xy.push_back(xy[k * 9]);
+    Random random{28};
+    shuffle_with(xy, random);
+    degenerate_dfp<K>("uniform with 100 duplicates", xy, 29);
+    degenerate_dfp<K>("integer grid with duplicates", [&] {
+      XYs g = grid_xy(20, 20, 30);
+      for(std::size_t k = 0; k < 50; ++k)
+        g.push_back(g[k * 5]);
+      shuffle_with(g, random);
+      return g;
+    }(), 31);
+  }
+  {
+    const XYs u = uniform_xy(1000, 32);
+    degenerate_dfp<K>("uniform * 1e15", transformed(u, 1e15, 0.), 33);
+    degenerate_dfp<K>("uniform * 1e-15", transformed(u, 1e-15, 0.), 34);
+    degenerate_dfp<K>("uniform * 1e-15 + 1 (a few ulps apart: duplicates and collinear)",
+                      transformed(u, 1e-15, 1.), 35);
+    degenerate_dfp<K>("uniform in [0, 1000]^2 + 1e15", transformed(u, 1000., 1e15), 36);
+    degenerate_dfp<K>("integer grid + 1e15", transformed(grid, 1., 1e15), 37);
+    degenerate_dfp<K>("integer grid * 1e-15", transformed(grid, 1e-15, 0.), 38);
+    degenerate_md<K>("uniform * 1e15, moved by 0.3 spacings", transformed(u, 1e15, 0.),
+                     gaussian_moved(transformed(u, 1e15, 0.), 0.3 * 1e15 / std::sqrt(1000.), 39));
+    degenerate_md<K>("uniform * 1e-15, moved by 0.3 spacings", transformed(u, 1e-15, 0.),
+                     gaussian_moved(transformed(u, 1e-15, 0.), 0.3 * 1e-15 / std::sqrt(1000.), 40));
+    degenerate_md<K>("jittered grid + 1e15 snapped onto the grid", transformed(jittered_grid, 1., 1e15),
+                     transformed(grid, 1., 1e15));
+  }
+}
+
+} // namespace
+
+int main()
+{
+  const XYs uniform_5000 = uniform_xy(5000, 1001);
+  {
+    Scope scope("Epick");
+    damaged_predictions<DT_with_info<Epick>>("uniform, DT with size_t info", to_points<Epick>(uniform_5000), 2001, true);
+    {
+      // Clustered points: combinatorial damage only (moves by the mean spacing would wreck the blobs).
+      CGAL::Random rng(3001);
+      damaged_predictions<DT_plain<Epick>>("clustered, DT without info", to_points<Epick>(clustered_points(2000, rng)),
+                                          2002, false);
+    }
+    isolated("n = 20000", [&] {
+      const auto points = to_points<Epick>(uniform_xy(20000, 1002));
+      const Faces dt_faces = DFP::delaunay_triangles(points);
+      using DT = DT_with_info<Epick>;
+      {
+        const Faces faces = DFP::moved_points_prediction(points, 0.05, 2003);
+        Expect e;
+        e.damaged = not_ccw(faces, points);
+        e.not_triangulation = e.carve_expected = e.damaged > 0;
+        e.must_repair = true;
+        DFP_CHECK(e.damaged > 0);
+        dfp_case<DT>("moved_points_prediction(0.05)", points, faces, e);
+      }
+      {
+        const Faces kept = DFP::delete_faces(dt_faces, 0.01, 2004);
+        Expect e;
+        e.damaged = dt_faces.size() - kept.size();
+        e.not_triangulation = e.holes_expected = e.must_repair = true;
+        dfp_case<DT>("delete_faces(0.01)", points, kept, e);
+      }
+      md_case<DT>("make_delaunay, every vertex moved by 0.05 x the mean spacing", points,
+                  gaussian_moves<DT>(0.05 / std::sqrt(20000.), 2005), true, true);
+    });
+    const std::vector<double> sigmas = {0.001, 0.01, 0.05, 0.1};
+    moved_triangulations<DT_with_info<Epick>>("make_delaunay, Delaunay_triangulation_2 with size_t info",
+                                              uniform_5000, 4001, sigmas);
+    moved_triangulations<T2_with_info<Epick, int>>("make_delaunay, Triangulation_2 with int info",
+                                                   uniform_5000, 4002, sigmas);
+    moved_triangulations<DT_plain<Epick>>("make_delaunay, Delaunay_triangulation_2 without info",
+                                          uniform_xy(2000, 1003), 4003, {0.1});
+    degenerate_inputs();
+  }
+  {
+    Scope scope("Simple_cartesian<double> (inexact): terminates with a valid triangulation");
+    const XYs xy = uniform_xy(2000, 1004);
+    const auto points = to_points<Inexact>(xy);
+    const double spacing = mean_spacing(xy);
+    for(const char* sigma_text : {"0.1", "0.5", "2"}) {
+      const double sigma = std::atof(sigma_text);
+      isolated(std::string("moved by ") + sigma_text + " x the mean spacing", [&] {
+        md_case<DT_with_info<Inexact>>("DT with info", points, gaussian_moves<DT_with_info<Inexact>>(sigma * spacing, 5001),
+                                       false, false, false);
+        md_case<T2_plain<Inexact>>("Triangulation_2", points, gaussian_moves<T2_plain<Inexact>>(sigma * spacing, 5002),
+                                   false, false, false);
+      });
+    }
+    isolated("jittered grid snapped onto the integer grid", [&] {
+      md_case<DT_with_info<Inexact>>("DT with info", to_points<Inexact>(gaussian_moved(grid_xy(20, 20, 5003), 0.2, 5004)),
+                                     moves_to<DT_with_info<Inexact>>(to_points<Inexact>(grid_xy(20, 20, 5003))),
+                                     false, false, false);
+    });
+  }
+  {
+    Scope scope("Epeck");
+    const XYs xy = uniform_xy(300, 1005);
+    const auto points = to_points<Epeck>(xy);
+    isolated("make_delaunay, moved", [&] {
+      md_case<DT_with_info<Epeck>>("moved by 0.1 x the mean spacing", points,
+                                   gaussian_moves<DT_with_info<Epeck>>(0.1 * mean_spacing(xy), 6001), false, false);
+      md_case<DT_with_info<Epeck>>("moved by 0.5 x the mean spacing", points,
+                                   gaussian_moves<DT_with_info<Epeck>>(0.5 * mean_spacing(xy), 6002), false, true);
+    });
+    isolated("delaunay_from_prediction, moved points", [&] {
+      const Faces faces = DFP::moved_points_prediction(points, 0.3, 6003);
+      Expect e;
+      e.damaged = not_ccw(faces, points);
+      DFP_CHECK(e.damaged > 0);
+      e.not_triangulation = e.carve_expected = e.damaged > 0; // n = 300: exactness, no budget asked
+      dfp_case<DT_with_info<Epeck>>("moved_points_prediction(0.3)", points, faces, e);
+    });
+  }
+  return finish("test_local_repair");
+}
