@@ -9,6 +9,9 @@
 //           internal/import_prediction.h  index triples -> CGAL TDS, twins by counting sort,
 //                                         in-circle test of each edge as its twins pair up
 //           internal/tds_certify.h        the same certificate read off a CGAL triangulation
+//   local repair (a prediction that is not a triangulation)
+//           internal/carve_repair.h       untangling flips, carving, holes, reinsertion
+//           internal/ear_clipping.h       the hole filler
 //   repair  internal/lawson_flip.h        Lawson flips seeded with the failing edges
 //           internal/rebuild.h            CGAL insertion for points no face uses, from-scratch
 //                                         fallbacks, in-place rebuilds keeping vertices
@@ -230,9 +233,11 @@ The result is exactly the triangulation CGAL's `Delaunay_triangulation_2` builds
 points: co-circular ties are broken by CGAL's symbolic perturbation. The time it takes depends
 on how good the prediction is. When `faces` is a triangulation of the points, it is certified
 in linear time and repaired by Lawson flips that start only at its non-locally-Delaunay edges;
-points used by no face are then inserted. Any other prediction (degenerate, inverted, crossing
-or repeated faces, holes) is not an error but makes the call build from scratch
-(`Statistics::fell_back`).
+points used by no face are then inserted. Any other prediction (degenerate, crossing, repeated
+or overlapping faces, holes, faces missing at the hull) is not an error: the faces that cannot
+be kept are left out or carved, the holes retriangulated and the vertices left without a face
+reinserted, then the flips run (see the user manual, "Local Repair"). A prediction too damaged
+for that to pay off is rebuilt from scratch (`Statistics::fell_back`).
 
 \tparam PointRange a random-access range of `DT::Point`.
 \tparam FaceRange a range whose elements `t` give three integer indices `t[0]`, `t[1]`, `t[2]`
@@ -262,6 +267,11 @@ or repeated faces, holes) is not an error but makes the call build from scratch
       rebuild). Only used for at least 4096 points and faces with random access.}
     \cgalParamType{`bool`}
     \cgalParamDefault{`true`}
+  \cgalParamNEnd
+  \cgalParamNBegin{strategy}
+    \cgalParamDescription{how the prediction is used, see `Strategy`}
+    \cgalParamType{`Strategy`}
+    \cgalParamDefault{`Strategy::automatic`}
   \cgalParamNEnd
 \cgalNamedParamsEnd
 
@@ -338,14 +348,20 @@ Statistics delaunay_from_prediction(const PointRange& points, const FaceRange& f
   std::vector<std::pair<Face_handle, int>>& stack = imported.not_locally_delaunay;
   std::vector<const void*> modified; // predicted faces changed by the repair
   std::unique_ptr<internal::Carve_repair<DT>> repair;
+  // Tracing and filling holes costs about 2 us per boundary half-edge at 1e6 points (measured:
+  // 1% of a DT's faces deleted, 60,000 such half-edges, 0.12 s), a rebuild about 0.75 us per
+  // point: past n/4 of them the repair would cost more than the rebuild it avoids.
+  if(imported.needs_repair && imported.open_halfedges.size() > n / 4 + 64)
+    return build_from_scratch("too many holes for a local repair");
   if(imported.needs_repair) {
     // The faces kept are not a triangulation with a convex hull: fill the holes and close
     // the hull (carve_repair.h); vertices left without a face are reinserted.
     repair.reset(new internal::Carve_repair<DT>(result, false));
     repair->expect_outer_cycle();
-    if(imported.faces_dropped > 0)
+    if(imported.faces_dropped > 0) { // faces overlapped: some may still overlap unseen
       repair->expect_several_fans();
-    internal::carve_vertices_wound_twice(result, *repair);
+      internal::carve_vertices_wound_twice(result, *repair);
+    }
     for(const auto& e : imported.open_halfedges)
       repair->add_open_halfedge(e.first, e.second);
     const char* why = repair->plan(internal::default_carve_limits(n));
@@ -381,6 +397,15 @@ Statistics delaunay_from_prediction(const PointRange& points, const FaceRange& f
   stats.points_unused = unused.size();
   if(unused.empty() && !repair) {
     stats.faces_certified = result.number_of_faces() - internal::count_distinct(touched);
+  } else if(unused.empty()) {
+    // The predicted faces kept, less those the repair modified (flipped, or split by a
+    // reinserted vertex); the faces it made are not predicted faces.
+    for(const Face_handle f : touched)
+      if(!repair->is_created(&*f))
+        modified.push_back(&*f);
+    std::sort(modified.begin(), modified.end());
+    modified.erase(std::unique(modified.begin(), modified.end()), modified.end());
+    stats.faces_certified = number_of_faces - stats.faces_carved - modified.size();
   } else {
     // A predicted face survives if it was never flipped, is not one the repair made, and has
     // no new vertex (insertion recycles the faces it destroys for faces around the new
@@ -414,8 +439,12 @@ The points of `tr` may have been moved with `Vertex::set_point()`, even so far t
 inverted or the dimension changes. Vertex handles and their `info()` survive; face handles need
 not. A triangulation whose faces are all counterclockwise is certified in linear time; a
 hull that is no longer convex is repaired by flips of hull edges; then Lawson flips start at
-the non-locally-Delaunay edges. Otherwise (an inverted or flat face, or past the flip budget)
-its faces are rebuilt around the same vertex objects (`Statistics::fell_back`).
+the non-locally-Delaunay edges. Inverted or flat faces are first untangled by flips where one
+flip makes them counterclockwise; the stars of the vertices of those that remain are carved,
+the holes retriangulated and the carved vertices reinserted (the same vertex objects), all in
+place (see the user manual, "Local Repair"). Past the budgets (too many inverted faces, too
+much carving, too many flips), or when moves change the dimension, its faces are rebuilt around
+the same vertex objects (`Statistics::fell_back`).
 
 \tparam Triangulation a `CGAL::Triangulation_2<Gt, Tds>` or `CGAL::Delaunay_triangulation_2<Gt, Tds>`,
         for any triangulation data structure.
@@ -430,6 +459,11 @@ its faces are rebuilt around the same vertex objects (`Statistics::fell_back`).
       rebuilt}
     \cgalParamType{`std::size_t`}
     \cgalParamDefault{three quarters of the number of vertices, plus 64}
+  \cgalParamNEnd
+  \cgalParamNBegin{strategy}
+    \cgalParamDescription{how the triangulation is used, see `Strategy`}
+    \cgalParamType{`Strategy`}
+    \cgalParamDefault{`Strategy::automatic`}
   \cgalParamNEnd
 \cgalNamedParamsEnd
 

@@ -51,7 +51,8 @@ struct Statistics
   /// number of those edges found not locally Delaunay (the measure \f$D_{local}\f$ of the
   /// paper when the prediction is a triangulation).
   std::size_t edges_not_locally_delaunay = 0;
-  /// number of points used by no predicted face (inserted afterwards, or merged as duplicates).
+  /// number of points used by no predicted face that was kept (a point used only by
+  /// degenerate faces counts); they are inserted afterwards, or merged as duplicates.
   std::size_t points_unused = 0;
   /// number of points equal to a point of smaller index (they share its vertex).
   std::size_t duplicate_points = 0;
@@ -67,7 +68,8 @@ struct Statistics
   /// local repair retriangulated.
   std::size_t holes_refilled = 0;
   /// number of rounds of the local repair: each round traces the holes and widens those that
-  /// cannot be retriangulated as they are (0 when nothing was carved).
+  /// cannot be retriangulated as they are (0 when the local repair did not run; it may run
+  /// without carving anything, only to fill holes).
   std::size_t carve_rounds = 0;
   /// why the prediction was not used as it is: empty when it was a triangulation of the
   /// points; otherwise a static string such as `"a face is degenerate"`.

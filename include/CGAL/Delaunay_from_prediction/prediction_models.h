@@ -164,6 +164,7 @@ triangulation `CGAL::Delaunay_triangulation_2` builds. Points at the same positi
 under their smallest index. Fewer than three non-collinear points give no face.
 \tparam PointRange a random-access range of points of a CGAL kernel.
 \param points the points.
+\returns the faces, each three point indices.
 */
 template <class PointRange>
 std::vector<Indexed_triangle> delaunay_triangles(const PointRange& points)
@@ -180,6 +181,7 @@ faces form a strictly convex quadrilateral. The flip distance to \f$DT(P)\f$ is 
 \param points the points.
 \param rho in \f$[0, 1]\f$; 1 gives \f$DT(P)\f$.
 \param seed the seed; the same seed gives the same triangulation.
+\returns the faces, each three point indices.
 */
 template <class PointRange>
 std::vector<Indexed_triangle> random_flip_prediction(const PointRange& points, double rho,
@@ -207,6 +209,7 @@ convex position).
 \param points the points.
 \param k the number of flips.
 \param seed the seed.
+\returns the faces, each three point indices.
 */
 template <class PointRange>
 std::vector<Indexed_triangle> k_flip_prediction(const PointRange& points, std::size_t k,
@@ -243,6 +246,7 @@ With `Completion::random`, \f$8m\f$ random flip attempts on edges outside \f$R\f
 \param seed the seed.
 \param completion how to complete \f$R\f$.
 \param kept_edges if not null, receives \f$R\f$, as pairs of indices (smaller first).
+\returns the faces, each three point indices.
 */
 template <class PointRange>
 std::vector<Indexed_triangle>
@@ -309,6 +313,7 @@ inverted with respect to `points` (then it is not a triangulation of them).
 \param points the points.
 \param noise the standard deviation in units of the mean spacing; 0 gives \f$DT(P)\f$.
 \param seed the seed.
+\returns the faces, each three point indices.
 */
 template <class PointRange>
 std::vector<Indexed_triangle> moved_points_prediction(const PointRange& points, double noise,
@@ -419,6 +424,7 @@ numbers are given; \f$DT(P)\f$ sorts them, so \f$D = \Theta(n)\f$.
 \tparam K a CGAL kernel.
 \param n the number of numbers to sort, at least 2.
 \param seed the seed.
+\returns the points and the faces of the configuration.
 */
 template <class K>
 Prediction_instance<typename K::Point_2> sorting_configuration(std::size_t n, std::uint64_t seed)
@@ -433,6 +439,7 @@ holes (not a triangulation once a face is gone).
 \param faces the faces.
 \param fraction the probability of deleting a face, in \f$[0, 1]\f$.
 \param seed the seed.
+\returns the faces, each three point indices.
 */
 inline std::vector<Indexed_triangle> delete_faces(const std::vector<Indexed_triangle>& faces,
                                                   double fraction, std::uint64_t seed)
@@ -455,6 +462,7 @@ and faces are inverted. Needs fewer than \f$2^{32}\f$ points.
 \param points the points.
 \param swaps the number of label exchanges.
 \param seed the seed.
+\returns the faces, each three point indices.
 */
 template <class PointRange>
 std::vector<Indexed_triangle> self_crossing_prediction(const PointRange& points, std::size_t swaps,
@@ -501,6 +509,7 @@ information at all (needs \f$n \ge 3\f$).
 \param n the number of points.
 \param count the number of triples.
 \param seed the seed.
+\returns the faces, each three point indices.
 */
 inline std::vector<Indexed_triangle> random_triples(std::size_t n, std::size_t count, std::uint64_t seed)
 {

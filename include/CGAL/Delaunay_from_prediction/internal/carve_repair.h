@@ -23,10 +23,10 @@
 // Lawson's algorithm reaches the Delaunay triangulation from any triangulation.
 //
 // Why ear clipping and not a Delaunay triangulation of each hole, or Chan's structures:
-// measured holes after moves are small (a median of about 10 boundary edges at sigma = 0.1
-// spacing), where ear clipping's few orientation tests and no allocation beat building an
-// auxiliary triangulation; the flips that follow make each hole Delaunay at the cost of a
-// few flips per hole edge.
+// holes are small (measured at 1e6 points moved by 0.1 spacing: 48,861 carved faces in 7,757
+// holes, about 6 faces each; 1% of a DT's faces deleted: single triangles and quadrilaterals),
+// where ear clipping's few orientation tests and no allocation beat building an auxiliary
+// triangulation per hole; the flips that follow make each hole Delaunay.
 
 #ifndef CGAL_DELAUNAY_FROM_PREDICTION_INTERNAL_CARVE_REPAIR_H
 #define CGAL_DELAUNAY_FROM_PREDICTION_INTERNAL_CARVE_REPAIR_H

@@ -421,7 +421,15 @@ private:
 
     const std::uint32_t* t = triples.data();
     bool f_dropped = false;
+    // Tolerant import: the half-edges still open are the moving frontier (about 16 sqrt(n))
+    // when the faces come sorted (spatial_order.h), plus the boundaries of holes; past n/4 of those the local repair would cost more than a
+    // rebuild (see delaunay_from_prediction), so the import stops as soon as it sees that many.
+    const std::size_t max_open = n_ / 4 + 64 + 32 * std::size_t(std::sqrt(double(n_)));
     for(std::size_t k = 0; k < number_of_faces_; ++k, t += 3) {
+      if(tolerant_ && order.faces_sorted() && (k & 4095) == 0 && open.size() > max_open) {
+        out_.failure = "too many holes for a local repair";
+        return;
+      }
       std::uint32_t v[3] = {t[0], t[1], t[2]};
       const Point& p0 = points[v[0]];
       Orientation o = orientation(p0, points[v[1]], points[v[2]]);
