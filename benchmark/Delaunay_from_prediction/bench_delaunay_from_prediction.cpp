@@ -23,15 +23,16 @@
 //   memory    peak heap bytes of the `shuffled` call vs CGAL's from-scratch build.
 //   kinetic   make_delaunay() on a CGAL DT with point indices in info() whose every vertex was
 //             moved by noise (--noise: gaussian, each coordinate N(0, s^2), or disk, uniform in
-//             the disk of radius s) of scale s = sigma x mean spacing sqrt(A/n) (A: area of the
-//             bounding box), sigma = 0.001 ... 0.5, with strategy carve (local repair) and
-//             strategy flips (the behaviour before local repair: a triangulation with an
-//             inverted face is rebuilt in place). Every repetition copies the moved DT
+//             the disk of radius s, or sparse, one vertex in 10,000 moved by gaussian noise of
+//             scale 10 s) of scale s = sigma x mean spacing sqrt(A/n) (A: area of the
+//             bounding box), sigma = 0.001 ... 0.5, with strategy carve (local repair),
+//             t_division (Theorem 2.1, --region-size) and flips (the behaviour before local
+//             repair: a triangulation with an inverted face is rebuilt in place). Every repetition copies the moved DT
 //             (untimed) and times the call alone. Also reported: inverted and flat faces
 //             before the call, faces carved, holes refilled, points reinserted, time per
 //             reinserted point. CGAL's reference is a from-scratch build of the moved points.
 //   deleted   delaunay_from_prediction() from the Delaunay faces with 1% and 10% of them
-//             deleted (each independently), list shuffled, strategy carve vs strategy flips.
+//             deleted (each independently), list shuffled, strategies carve, t_division, flips.
 //
 // Every result of ours is compared with CGAL's (vertex and face counts and an order-independent
 // hash of the face set as sorted coordinate triples), outside the timers; a mismatch prints
@@ -273,16 +274,24 @@ double mean_spacing(const std::vector<Point>& points)
 
 // The points moved by independent noise of scale `step`, point i by the i-th draw of a
 // generator seeded with `seed` (so the same seed gives the same field at every scale):
-// gaussian, each coordinate plus N(0, step^2); disk, a point uniform in the disk of radius step.
+// gaussian, each coordinate plus N(0, step^2); disk, a point uniform in the disk of radius step;
+// sparse, one point in 10,000 (the first, then every 10,000th) moved by Gaussian noise of
+// scale 10 step, the others not moved (a few wrong points: the case Theorem 2.1 is made for).
 std::vector<Point> noisy_points(const std::vector<Point>& points, const std::string& noise,
                                 double step, std::uint64_t seed)
 {
   Rng rng{seed};
   std::vector<Point> out;
   out.reserve(points.size());
+  std::size_t index = 0;
   for(const Point& p : points) {
     double dx, dy;
-    if(noise == "gaussian") {
+    if(noise == "sparse") { // one point in 10,000, ten times the step
+      dx = 10 * step * rng.normal();
+      dy = 10 * step * rng.normal();
+      if(index++ % 10000 != 0)
+        dx = dy = 0;
+    } else if(noise == "gaussian") {
       dx = step * rng.normal();
       dy = step * rng.normal();
     } else {
@@ -317,6 +326,7 @@ struct Named_strategy
   DFP::Strategy strategy;
 };
 const Named_strategy repair_strategies[] = {{"carve", DFP::Strategy::carve},
+                                            {"t_division", DFP::Strategy::t_division},
                                             {"flips", DFP::Strategy::flips}};
 
 // ---------------------------------------------------------------------------------------------
@@ -331,6 +341,12 @@ struct Options
   std::string csv;
   std::string malloc_policy = "keep";
   std::uint64_t seed = 20260101;
+  std::vector<std::string> strategies{"carve", "t_division", "flips"};
+  std::size_t region_size = 0; // 0: the default of Strategy::t_division
+  bool runs(const std::string& s) const
+  {
+    return std::find(strategies.begin(), strategies.end(), s) != strategies.end();
+  }
   bool wants(const std::string& c) const { return std::find(cases.begin(), cases.end(), c) != cases.end(); }
 };
 
@@ -343,11 +359,13 @@ void usage(const char* program)
       "  --cases LIST    subset of shuffled,hilbert,flips,move,random,memory,kinetic,deleted\n"
       "                  (default shuffled,hilbert,flips,move,random,memory)\n"
       "  --dist LIST     subset of uniform,clustered (default both)\n"
-      "  --noise LIST    noise of the kinetic case, subset of gaussian,disk (default gaussian)\n"
+      "  --noise LIST    noise of the kinetic case, subset of gaussian,disk,sparse (default gaussian)\n"
       "  --csv FILE      also write one CSV row per measurement to FILE\n"
       "  --malloc P      keep (default): mallopt(M_MMAP_MAX=0, M_TRIM_THRESHOLD=-1), freed memory is\n"
       "                  kept by the process and reused; default: glibc's own policy\n"
-      "  --seed S        base seed of every input (default 20260101)\n",
+      "  --seed S        base seed of every input (default 20260101)\n"
+      "  --strategies L  strategies of kinetic and deleted, subset of carve,t_division,flips (default all)\n"
+      "  --region-size T region size t of strategy t_division (default: max(64, log2(n)^2))\n",
       program);
 }
 
@@ -387,7 +405,7 @@ Options parse(int argc, char** argv)
     } else if(a == "--noise") {
       o.noises = split(value(i));
       for(const std::string& d : o.noises)
-        if(d != "gaussian" && d != "disk") {
+        if(d != "gaussian" && d != "disk" && d != "sparse") {
           std::fprintf(stderr, "unknown noise %s\n", d.c_str());
           std::exit(2);
         }
@@ -399,6 +417,15 @@ Options parse(int argc, char** argv)
         std::fprintf(stderr, "--malloc takes keep or default\n");
         std::exit(2);
       }
+    } else if(a == "--strategies") {
+      o.strategies = split(value(i));
+      for(const std::string& st : o.strategies)
+        if(st != "carve" && st != "t_division" && st != "flips") {
+          std::fprintf(stderr, "unknown strategy %s\n", st.c_str());
+          std::exit(2);
+        }
+    } else if(a == "--region-size") {
+      o.region_size = std::size_t(std::max(1LL, std::atoll(value(i).c_str())));
     } else if(a == "--seed") {
       o.seed = std::strtoull(value(i).c_str(), nullptr, 10);
     } else {
@@ -809,9 +836,10 @@ void run(const Options& o, const std::string& dist, std::size_t n, Report& repor
 
   // 7. Kinetic: make_delaunay() on CGAL's DT with point indices in info(), every vertex moved
   //    by noise of scale sigma x mean spacing (point i by the i-th draw, the same field for
-  //    every sigma), strategy carve vs strategy flips. Every repetition copies the moved DT and
+  //    every sigma), strategies carve, t_division and flips. Every repetition copies the moved DT and
   //    times make_delaunay() alone. CGAL builds the moved points from scratch (plain DT, range
   //    insert), its repetitions shared by both strategies.
+  const std::size_t t = o.region_size != 0 ? o.region_size : DFP::internal::default_region_size(n);
   if(o.wants("kinetic")) {
     const double spacing = mean_spacing(points);
     for(const std::string& noise : o.noises) {
@@ -826,6 +854,8 @@ void run(const Options& o, const std::string& dist, std::size_t n, Report& repor
         std::vector<Row> rows;
         std::vector<Our_call> calls;
         for(const Named_strategy& st : repair_strategies) {
+          if(!o.runs(st.name))
+            continue;
           std::ostringstream param;
           param << "sigma=" << sigma << " " << (noise == "gaussian" ? "gauss" : noise) << ", "
                 << st.name;
@@ -836,9 +866,14 @@ void run(const Options& o, const std::string& dist, std::size_t n, Report& repor
           row.flat = (long long)damage.second;
           rows.push_back(row);
           const DFP::Strategy strategy = st.strategy;
-          calls.push_back([&moved_tr, strategy](DFP::Statistics& stats, Signature& s) {
+          calls.push_back([&moved_tr, strategy, t](DFP::Statistics& stats, Signature& s) {
             DTI tr = moved_tr; // untimed copy
-            return time_call(tr, [&] { stats = DFP::make_delaunay(tr, DFP::parameters::strategy(strategy)); }, s);
+            return time_call(
+                tr,
+                [&] {
+                  stats = DFP::make_delaunay(tr, DFP::parameters::strategy(strategy, DFP::parameters::region_size(t)));
+                },
+                s);
           });
         }
         std::vector<Row*> row_pointers;
@@ -852,8 +887,8 @@ void run(const Options& o, const std::string& dist, std::size_t n, Report& repor
   }
 
   // 8. Deleted faces: the Delaunay faces, each deleted with probability 1% or 10%, the rest
-  //    shuffled (as in case 3), strategy carve vs strategy flips. CGAL builds the points from
-  //    scratch, its repetitions shared by both strategies.
+  //    shuffled (as in case 3), strategies carve, t_division and flips. CGAL builds the points
+  //    from scratch, its repetitions shared by the strategies.
   if(o.wants("deleted")) {
     for(double fraction : {0.01, 0.1}) {
       Rng rng{seed_for(o.seed, "deleted/" + dist + "/" + percent(fraction), n)};
@@ -866,14 +901,17 @@ void run(const Options& o, const std::string& dist, std::size_t n, Report& repor
       std::vector<Row> rows;
       std::vector<Our_call> calls;
       for(const Named_strategy& st : repair_strategies) {
+        if(!o.runs(st.name))
+          continue;
         Row row = new_row("deleted", percent(fraction) + " of faces, " + st.name);
         row.strategy = st.name;
         row.repair_details = true;
         row.deleted = (long long)(all.size() - faces.size());
         rows.push_back(row);
         const DFP::Strategy strategy = st.strategy;
-        calls.push_back([&points, &faces, strategy](DFP::Statistics& stats, Signature& s) {
-          return time_prediction(points, faces, stats, s, DFP::parameters::strategy(strategy));
+        calls.push_back([&points, &faces, strategy, t](DFP::Statistics& stats, Signature& s) {
+          return time_prediction(points, faces, stats, s,
+                                 DFP::parameters::strategy(strategy, DFP::parameters::region_size(t)));
         });
       }
       std::vector<Row*> row_pointers;
@@ -943,7 +981,7 @@ int main(int argc, char** argv)
          << "          FALLBACK = built from scratch, repair = used after local repair (faces carved or\n"
          << "          holes refilled). D_local: predicted edges not locally Delaunay. flips: flips made.\n";
   if(o.wants("kinetic") || o.wants("deleted"))
-    header << "repair:   kinetic and deleted time strategy carve and strategy flips (no local repair) in\n"
+    header << "repair:   kinetic and deleted time strategies carve, t_division and flips (no local repair) in\n"
            << "          the same repetitions, against the same CGAL times. Second line: the damage\n"
            << "          before the call and the call's statistics; us/reinserted pt = median time of the\n"
            << "          whole call / points reinserted (an upper bound of the cost per point).\n";

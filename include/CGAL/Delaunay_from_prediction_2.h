@@ -12,6 +12,7 @@
 //   local repair (a prediction that is not a triangulation)
 //           internal/carve_repair.h       untangling flips, carving, holes, reinsertion
 //           internal/ear_clipping.h       the hole filler
+//           internal/region_repair.h      the t-division repair (Theorem 2.1)
 //   repair  internal/lawson_flip.h        Lawson flips seeded with the failing edges
 //           internal/rebuild.h            CGAL insertion for points no face uses, from-scratch
 //                                         fallbacks, in-place rebuilds keeping vertices
@@ -27,6 +28,7 @@
 #include <CGAL/Delaunay_from_prediction/internal/input_check.h>
 #include <CGAL/Delaunay_from_prediction/internal/lawson_flip.h>
 #include <CGAL/Delaunay_from_prediction/internal/rebuild.h>
+#include <CGAL/Delaunay_from_prediction/internal/region_repair.h>
 #include <CGAL/Delaunay_from_prediction/internal/tds_certify.h>
 
 #include <CGAL/Named_function_parameters.h>
@@ -223,6 +225,70 @@ const char* carve_in_place(Triangulation& tr, const std::vector<typename Triangu
   return nullptr;
 }
 
+// Budget of Strategy::t_division for n vertices, in point insertions (|V_B| plus twice the
+// vertices of the bad regions): about a rebuild. Tests raise it to reach the repair on small,
+// badly damaged inputs.
+#ifndef CGAL_DELAUNAY_FROM_PREDICTION_T_DIVISION_BUDGET
+#define CGAL_DELAUNAY_FROM_PREDICTION_T_DIVISION_BUDGET(n) (n)
+#endif
+
+// Strategy::t_division on the valid triangulation `tr` (region_repair.h): the faces in `bad`
+// are not counterclockwise; the failing edges are those of `stack` (when `stack_fails`), or
+// those of its edges that fail the in-circle test. Replaces the bad regions and reinserts
+// their inner vertices, leaving the flips to the caller; returns null then, otherwise why not
+// with `tr` untouched. With `check_duplicates`, returns first if a vertex to reinsert is at
+// the point of another; otherwise `on_duplicate(v, w)` handles it as in reinsert_vertex_objects().
+template <class Triangulation, class OnDuplicate>
+const char* repair_by_regions(Triangulation& tr, std::unique_ptr<Region_repair<Triangulation>>& regions,
+                              const std::vector<typename Triangulation::Face_handle>& bad, bool hull_is_convex,
+                              std::vector<std::pair<typename Triangulation::Face_handle, int>>& stack,
+                              bool stack_fails, std::size_t region_size, std::vector<const void*>& modified,
+                              Statistics& stats, bool check_duplicates, OnDuplicate on_duplicate)
+{
+  const std::size_t n = tr.number_of_vertices();
+  const auto& gt = tr.geom_traits();
+  const auto infinite = tr.infinite_vertex();
+  std::vector<std::pair<typename Triangulation::Face_handle, int>> failing;
+  for(const auto& e : stack) {
+    const auto f = e.first;
+    const int i = e.second;
+    const auto g = f->neighbor(i);
+    if(f->has_vertex(infinite) || g->has_vertex(infinite))
+      continue;
+    if(stack_fails || !is_locally_delaunay(gt, f->vertex(i)->point(), f->vertex(ccw(i))->point(),
+                                           f->vertex(cw(i))->point(), g->vertex(tr.tds().mirror_index(f, i))->point()))
+      failing.push_back(e);
+  }
+  // m marks spread over the 2n/t regions spoil about a fraction 1 - exp(-m t / 2n) of the
+  // faces; past a fifth (m > 0.45 n / t) their vertices, reinserted at about four times the
+  // cost of an insertion of a rebuild (Region_repair::plan()), would cost more than the
+  // rebuild: say so before dividing.
+  const std::size_t budget = CGAL_DELAUNAY_FROM_PREDICTION_T_DIVISION_BUDGET(n);
+  if(double(bad.size() + failing.size()) * double(region_size) > 0.45 * double(budget))
+    return "the damage spoils most regions of the t-division";
+  regions.reset(new Region_repair<Triangulation>(tr, region_size));
+  for(const auto f : bad)
+    regions->mark_bad_face(f);
+  for(const auto& e : failing)
+    regions->mark_failing_edge(e.first, e.second);
+  if(!hull_is_convex)
+    regions->mark_hull_if_not_convex();
+  const char* why = regions->plan(budget);
+  stats.regions = regions->regions();
+  stats.bad_regions = regions->bad_regions();
+  stats.boundary_vertices = regions->boundary_vertices();
+  if(why != nullptr)
+    return why;
+  if(check_duplicates && has_duplicate_of(tr, regions->detached()))
+    return "two vertices are at the same point";
+  regions->commit(stack);
+  regions->reinsert(stack, modified, on_duplicate);
+  stats.faces_carved += regions->faces_removed();
+  stats.holes_refilled += regions->holes();
+  stats.points_reinserted += regions->detached().size();
+  return nullptr;
+}
+
 } // namespace internal
 
 /*!
@@ -298,7 +364,10 @@ Statistics delaunay_from_prediction(const PointRange& points, const FaceRange& f
                                                  internal::default_max_flips(n));
   const bool screen = choose_parameter(get_parameter(np, internal_np::screen_prediction), true);
   const Strategy strategy = choose_parameter(get_parameter(np, internal_np::strategy), Strategy::automatic);
-  const bool carve = strategy == Strategy::automatic || strategy == Strategy::carve;
+  const bool carve = strategy == Strategy::automatic || strategy == Strategy::carve ||
+                     strategy == Strategy::t_division;
+  const std::size_t region_size = choose_parameter(get_parameter(np, internal_np::region_size),
+                                                   internal::default_region_size(n));
   const auto& gt = dt.geom_traits();
 
   // Check, then import and certify into a fresh triangulation (Invalid_prediction is thrown
@@ -388,20 +457,39 @@ Statistics delaunay_from_prediction(const PointRange& points, const FaceRange& f
     stats.points_reinserted = repair->detached().size();
     stats.duplicate_points += duplicates;
   }
+  std::unique_ptr<internal::Region_repair<DT>> regions;
+  if(strategy == Strategy::t_division) {
+    std::size_t duplicates = 0;
+    const char* why = internal::repair_by_regions(
+        result, regions, std::vector<Face_handle>(), true, stack, !repair, region_size, modified, stats, false,
+        [&](Vertex_handle v, Vertex_handle same) {
+          internal::merge_index_info_of(same, v);
+          result.tds().delete_vertex(v);
+          ++duplicates;
+        });
+    if(why != nullptr)
+      return build_from_scratch(why);
+    stats.duplicate_points += duplicates;
+  }
+  auto made_by_repair = [&](const void* f) {
+    return (repair && repair->is_created(f)) || (regions && regions->is_created(f));
+  };
   std::vector<Face_handle> touched;
-  if(!internal::lawson_flip(result, stack, max_flips, stats.flips, touched))
+  // Points reinserted by the t-division make a few flips each, on top of the budget.
+  const std::size_t flip_budget = max_flips + (regions ? 4 * regions->detached().size() : 0);
+  if(!internal::lawson_flip(result, stack, flip_budget, stats.flips, touched))
     return build_from_scratch(internal::flip_budget_exhausted);
 
   // Points no face uses: duplicates of vertices, or points to insert.
   std::vector<std::size_t>& unused = imported.unused_points;
   stats.points_unused = unused.size();
-  if(unused.empty() && !repair) {
+  if(unused.empty() && !repair && !regions) {
     stats.faces_certified = result.number_of_faces() - internal::count_distinct(touched);
   } else if(unused.empty()) {
     // The predicted faces kept, less those the repair modified (flipped, or split by a
     // reinserted vertex); the faces it made are not predicted faces.
     for(const Face_handle f : touched)
-      if(!repair->is_created(&*f))
+      if(!made_by_repair(&*f))
         modified.push_back(&*f);
     std::sort(modified.begin(), modified.end());
     modified.erase(std::unique(modified.begin(), modified.end()), modified.end());
@@ -423,7 +511,7 @@ Statistics delaunay_from_prediction(const PointRange& points, const FaceRange& f
     stats.faces_certified = 0;
     for(auto f = result.finite_faces_begin(); f != result.finite_faces_end(); ++f)
       if(!std::binary_search(modified.begin(), modified.end(), static_cast<const void*>(&*f)) &&
-         !(repair && repair->is_created(&*f)) && !is_new(f->vertex(0)) && !is_new(f->vertex(1)) &&
+         !made_by_repair(&*f) && !is_new(f->vertex(0)) && !is_new(f->vertex(1)) &&
          !is_new(f->vertex(2)))
         ++stats.faces_certified;
   }
@@ -488,6 +576,9 @@ Statistics make_delaunay(Triangulation& tr, const NamedParameters& np = paramete
     return stats;
 
   const bool carve = strategy == Strategy::automatic || strategy == Strategy::carve;
+  const bool divide = strategy == Strategy::t_division;
+  const std::size_t region_size = choose_parameter(get_parameter(np, internal_np::region_size),
+                                                   internal::default_region_size(tr.number_of_vertices()));
   std::vector<std::pair<Face_handle, int>> stack;
   std::vector<Face_handle> bad;
   bool hull_is_convex = false;
@@ -495,7 +586,7 @@ Statistics make_delaunay(Triangulation& tr, const NamedParameters& np = paramete
   const char* why = strategy == Strategy::rebuild
                         ? internal::rebuild_requested
                         : internal::certify_triangulation(tr, stack, stats.edges_tested, hull_is_convex,
-                                                          carve ? &bad : nullptr, max_bad);
+                                                          carve || divide ? &bad : nullptr, max_bad);
   if(why == nullptr)
     stats.edges_not_locally_delaunay = stack.size();
   // Lawson needs at least a flip per failing edge: past the budget, the flips are wasted.
@@ -506,6 +597,30 @@ Statistics make_delaunay(Triangulation& tr, const NamedParameters& np = paramete
   // rebuild that finds two vertices at the same point leaves `tr` as it was.
   std::vector<std::pair<Vertex_handle, Vertex_handle>> untangled;
   std::vector<Face_handle> touched;
+  if(why == nullptr && divide) {
+    // Theorem 2.1 (region_repair.h); on failure `tr` is untouched, or a valid triangulation
+    // of the same vertices when the flip budget ran out: rebuilt below either way.
+    std::unique_ptr<internal::Region_repair<Triangulation>> regions;
+    std::vector<const void*> modified;
+    why = internal::repair_by_regions(tr, regions, bad, hull_is_convex, stack, true, region_size, modified,
+                                      stats, true, [](auto, auto) {
+                                        CGAL_assertion_msg(false, "duplicates were ruled out before");
+                                      });
+    if(why == nullptr) {
+      // Reinserted points make a few flips each, as in any incremental construction: they
+      // count on top of the budget for the repair of the prediction.
+      if(internal::lawson_flip(tr, stack, max_flips + 4 * regions->detached().size(), stats.flips, touched)) {
+        for(const Face_handle f : touched)
+          if(!regions->is_created(&*f))
+            modified.push_back(&*f);
+        std::sort(modified.begin(), modified.end());
+        modified.erase(std::unique(modified.begin(), modified.end()), modified.end());
+        stats.faces_certified = stats.faces_in - stats.faces_carved - modified.size();
+        return stats;
+      }
+      why = internal::flip_budget_exhausted;
+    }
+  }
   if(why == nullptr && !bad.empty()) {
     internal::untangle_by_flips(tr, bad, stack, untangled, touched);
     stats.flips += untangled.size();

@@ -9,9 +9,11 @@
 // delaunay_from_prediction), the holes are retriangulated, the vertices left without a face
 // are reinserted, then Lawson flips finish the job.
 //
-// Every call is made with each strategy (no parameter, automatic, carve, flips, rebuild) and
-// its result must be exactly CGAL's Delaunay_triangulation_2 built from scratch, whatever
-// path was taken. On top of that:
+// Every call is made with each strategy (no parameter, automatic, carve, t_division, flips,
+// rebuild) and its result must be exactly CGAL's Delaunay_triangulation_2 built from scratch,
+// whatever path was taken. The budget of t_division is lifted in this file, so that its
+// repair (region_repair.h) runs on small, badly damaged inputs too instead of falling back
+// (test_t_division.cpp tests it with its budget). On top of that:
 //  - a prediction that is a triangulation is handled as before: nothing carved or refilled;
 //  - with small damage at moderate n, the carving strategies (default, automatic, carve) do
 //    not fall back, carve where faces are inverted or repeated, and reinsert a number of points
@@ -27,6 +29,9 @@
 // triangulation); Epeck. Every group runs in a child process with a time limit, so a crash or
 // an endless loop is a failure of that group only.
 
+// No budget for Strategy::t_division: reach its repair whatever the damage.
+#define CGAL_DELAUNAY_FROM_PREDICTION_T_DIVISION_BUDGET(n) (std::size_t(-1) / 4)
+
 #include <CGAL/Delaunay_from_prediction_2.h> // first: the header is self-contained
 
 #include "test_util.h"
@@ -38,6 +43,7 @@
 
 #include <csignal>
 #include <cstdint>
+#include <memory>
 #include <functional>
 
 using namespace dfp_test;
@@ -52,8 +58,8 @@ namespace {
 // Strategies
 // ---------------------------------------------------------------------------------------------
 
-enum class Mode { defaults, automatic, carve, flips, rebuild };
-const Mode all_modes[] = {Mode::defaults, Mode::automatic, Mode::carve, Mode::flips, Mode::rebuild};
+enum class Mode { defaults, automatic, carve, t_division, flips, rebuild };
+const Mode all_modes[] = {Mode::defaults, Mode::automatic, Mode::carve, Mode::t_division, Mode::flips, Mode::rebuild};
 
 const char* name_of(Mode m)
 {
@@ -61,6 +67,7 @@ const char* name_of(Mode m)
   case Mode::defaults: return "no parameter";
   case Mode::automatic: return "automatic";
   case Mode::carve: return "carve";
+  case Mode::t_division: return "t_division";
   case Mode::flips: return "flips";
   default: return "rebuild";
   }
@@ -77,6 +84,7 @@ DFP::Statistics with_strategy(Mode m, const F& body)
   case Mode::defaults: return body(P::default_values());
   case Mode::automatic: return body(P::strategy(DFP::Strategy::automatic));
   case Mode::carve: return body(P::strategy(DFP::Strategy::carve));
+  case Mode::t_division: return body(P::strategy(DFP::Strategy::t_division));
   case Mode::flips: return body(P::strategy(DFP::Strategy::flips));
   default: return body(P::strategy(DFP::Strategy::rebuild));
   }
@@ -90,6 +98,7 @@ std::string describe(const DFP::Statistics& s)
       << s.edges_tested << " not_ld=" << s.edges_not_locally_delaunay << " unused=" << s.points_unused
       << " duplicates=" << s.duplicate_points << " reordered=" << s.input_reordered
       << " carved=" << s.faces_carved << " holes=" << s.holes_refilled << " rounds=" << s.carve_rounds
+      << " regions=" << s.regions << " bad_regions=" << s.bad_regions << " V_B=" << s.boundary_vertices
       << " reason='" << s.fallback_reason << "'";
   return out.str();
 }
@@ -133,6 +142,24 @@ void check_strategy(Mode m, const DFP::Statistics& s, const Expect& e, std::size
       if(e.must_repair) // small damage: the repair stays local
         DFP_CHECK_MSG(s.points_reinserted <= reinsert_bound,
                       describe(s) << "; bound " << reinsert_bound << " (" << e.damaged << " damaged faces)");
+    }
+  } else if(m == Mode::t_division) {
+    // Without its budget it falls back only past certification's limit on inverted faces, or
+    // when every region is bad.
+    if(!s.fell_back) {
+      DFP_CHECK_MSG(s.regions > 0 || (s.faces_carved == 0 && s.points_reinserted <= reinsert_bound), describe(s));
+      DFP_CHECK_MSG(s.bad_regions <= s.regions && s.boundary_vertices <= n, describe(s));
+      DFP_CHECK_MSG(s.points_reinserted <= n, describe(s));
+      if(e.valid)
+        DFP_CHECK_MSG(s.carve_rounds == 0, describe(s));
+      if(e.carve_expected) // an inverted face makes its region bad; a dropped face is carved
+        DFP_CHECK_MSG(s.faces_carved > 0, describe(s));
+    } else {
+      // With exact predicates the fill always fits (region_repair.h): a fallback is for a
+      // budget or a degenerate input, never for an inconsistency.
+      const std::string why = s.fallback_reason;
+      DFP_CHECK_MSG(why.find("do not fit") == std::string::npos && why.find("same vertices") == std::string::npos,
+                    describe(s));
     }
   } else if(m == Mode::flips) {
     if(e.not_triangulation)
@@ -819,6 +846,91 @@ void degenerate_inputs()
   }
 }
 
+// The carve must not depend on where the faces sit in memory. It did: the outer loop was the
+// counterclockwise loop with the lowest-leftmost vertex, and when an island hung at that very
+// vertex the first in memory order won; the real outer loop, taken for an island, was then
+// carved layer by layer past the budget (18 of 40 memory layouts of this very input fell back).
+void carve_independent_of_memory_layout(const XYs& xy)
+{
+  using Tr = DT_with_info<Epick>;
+  const auto points = to_points<Epick>(xy);
+  std::vector<std::unique_ptr<char[]>> clutter;
+  std::size_t carved = 0;
+  for(int layout = 0; layout < 24; ++layout) {
+    Scope scope("memory layout ", layout);
+    for(int k = 0; k < 7 * layout; ++k) // shifts where the next blocks go
+      clutter.emplace_back(new char[16 + (37 * k) % 200]);
+    Tr tr;
+    Handles<Tr> handles;
+    build(tr, points, handles);
+    gaussian_moves<Tr>(0.1 * mean_spacing(xy), 4001)(handles);
+    const auto moved = current_points(handles);
+    const DFP::Statistics s = DFP::make_delaunay(tr, DFP::parameters::strategy(DFP::Strategy::carve));
+    DFP_CHECK_MSG(!s.fell_back, describe(s));
+    if(layout == 0)
+      carved = s.faces_carved;
+    DFP_CHECK_MSG(s.faces_carved == carved, describe(s) << " vs " << carved << " carved with the first layout");
+    check_handles(tr, handles, moved);
+    check_is_cgal_delaunay(tr, moved);
+  }
+}
+
+// Strategy::t_division with tiny regions (4 to 64 faces) on many small random inputs, so that
+// most regions touch bad ones and the fills meet each other, the hull and the grid's
+// co-circular ties: make_delaunay after random moves (vertex handles and info kept), and
+// delaunay_from_prediction from the DT of other points (crossing and inverted faces).
+void t_division_small_random_cases()
+{
+  using Tr = DT_with_info<Epick>;
+  std::size_t repaired = 0;
+  for(std::uint64_t seed = 0; seed < 160; ++seed) {
+    Random random{seed * 7919 + 5};
+    const std::size_t n = 20 + std::size_t(random.below(500));
+    const int kind = int(random.below(3));
+    XYs xy = kind == 0 ? uniform_xy(n, seed + 100)
+             : kind == 1 ? grid_xy(int(std::sqrt(double(n))) + 1, int(std::sqrt(double(n))) + 1, seed + 200)
+                         : uniform_xy(n, seed + 300, -1e6, 1e6);
+    const double sigmas[] = {0.01, 0.1, 0.4, 1.0};
+    const double sigma = sigmas[random.below(4)];
+    XYs moved = gaussian_moved(xy, sigma * mean_spacing(xy), seed + 400);
+    if(kind == 1) // a quarter stays on the grid: co-circular ties
+      for(std::size_t i = 0; i < xy.size(); i += 4)
+        moved[i] = xy[i];
+    const std::size_t sizes[] = {4, 8, 16, 64};
+    const std::size_t t = sizes[random.below(4)];
+    std::ostringstream label;
+    label << "seed " << seed << ", n = " << xy.size() << ", sigma = " << sigma << ", t = " << t;
+    Scope scope(label.str());
+    const auto target = to_points<Epick>(moved);
+    if(std::set<std::pair<double, double>>([&] {
+         std::set<std::pair<double, double>> distinct;
+         for(const XY& p : moved)
+           distinct.insert({p.x, p.y});
+         return distinct;
+       }()).size() != moved.size())
+      continue; // make_delaunay rejects duplicates (test_bad_input.cpp)
+    const auto np = DFP::parameters::strategy(DFP::Strategy::t_division, DFP::parameters::region_size(t));
+    {
+      Tr tr;
+      Handles<Tr> handles;
+      build(tr, to_points<Epick>(xy), handles);
+      moves_to<Tr>(target)(handles);
+      const DFP::Statistics s = DFP::make_delaunay(tr, np);
+      repaired += !s.fell_back && s.bad_regions > 0 ? 1 : 0;
+      check_handles(tr, handles, target);
+      check_is_cgal_delaunay(tr, target);
+    }
+    {
+      const Faces faces = delaunay_faces<Epick>(to_points<Epick>(xy)); // predicted from the unmoved points
+      Tr dt;
+      const DFP::Statistics s = DFP::delaunay_from_prediction(target, faces, dt, np);
+      repaired += !s.fell_back && s.bad_regions > 0 ? 1 : 0;
+      check_is_cgal_delaunay(dt, target);
+    }
+  }
+  DFP_CHECK_MSG(repaired >= 100, repaired << " of 320 calls took the t-division repair");
+}
+
 } // namespace
 
 int main()
@@ -864,6 +976,8 @@ int main()
     moved_triangulations<DT_plain<Epick>>("make_delaunay, Delaunay_triangulation_2 without info",
                                           uniform_xy(2000, 1003), 4003, {0.1});
     degenerate_inputs();
+    isolated("t_division, tiny regions, small random inputs", [] { t_division_small_random_cases(); });
+    isolated("carve, the same input in 24 memory layouts", [&] { carve_independent_of_memory_layout(uniform_5000); });
   }
   {
     Scope scope("Simple_cartesian<double> (inexact): terminates with a valid triangulation");

@@ -44,6 +44,8 @@ struct Statistics
   /// of carved faces, or every point when the call built from scratch.
   std::size_t points_reinserted = 0;
   /// `true` if the call gave up on the prediction and built the triangulation from scratch.
+  /// The counts of the stages that ran before (edges tested, faces carved, holes refilled,
+  /// carve rounds, regions, flips) are kept: they tell how far the call went.
   bool fell_back = false;
 
   /// number of interior edges of the prediction checked by the in-circle test.
@@ -71,6 +73,13 @@ struct Statistics
   /// cannot be retriangulated as they are (0 when the local repair did not run; it may run
   /// without carving anything, only to fill holes).
   std::size_t carve_rounds = 0;
+  /// `Strategy::t_division`: number of regions the faces were divided into (0 otherwise).
+  std::size_t regions = 0;
+  /// `Strategy::t_division`: number of bad regions, whose faces were replaced.
+  std::size_t bad_regions = 0;
+  /// `Strategy::t_division`: number of vertices on region boundaries (\f$|V_B|\f$), whose
+  /// Delaunay triangulation was built.
+  std::size_t boundary_vertices = 0;
   /// why the prediction was not used as it is: empty when it was a triangulation of the
   /// points; otherwise a static string such as `"a face is degenerate"`.
   const char* fallback_reason = "";

@@ -120,6 +120,58 @@ void undo_untangling(Triangulation& tr,
   log.clear();
 }
 
+// Inserts `vertices` (vertex objects with no face) into the valid triangulation `tr`, keeping
+// each object, so that handles and info() survive: CGAL's location and insertion of the
+// triangulation base class (no flips), then the vertex object insertion made is replaced by
+// the old one in its faces. In a grid order, each located from the last. The edges around
+// each go on `stack` (Lawson's algorithm makes them Delaunay). `on_hit(f)` is called for the
+// faces insertion destroys or splits, `on_created(f)` for the faces around each reinserted
+// vertex, `on_duplicate(v, w)` instead of inserting v when its point is already vertex w's.
+template <class Triangulation, class OnHit, class OnCreated, class OnDuplicate>
+void reinsert_vertex_objects(Triangulation& tr, const std::vector<typename Triangulation::Vertex_handle>& vertices,
+                             std::vector<std::pair<typename Triangulation::Face_handle, int>>& stack,
+                             OnHit on_hit, OnCreated on_created, OnDuplicate on_duplicate)
+{
+  using Base = Triangulation_2<typename Triangulation::Geom_traits, typename Triangulation::Triangulation_data_structure>;
+  using Vertex_handle = typename Triangulation::Vertex_handle;
+  using Face_handle = typename Triangulation::Face_handle;
+  using Point = typename Triangulation::Point;
+  Base& base = static_cast<Base&>(tr);
+  std::vector<std::size_t> order(vertices.size());
+  for(std::size_t k = 0; k < order.size(); ++k)
+    order[k] = k;
+  sort_along_grid(order, [&](std::size_t k) -> const Point& { return vertices[k]->point(); }, false);
+  Face_handle hint = tr.infinite_vertex()->face();
+  for(const std::size_t k : order) {
+    const Vertex_handle v = vertices[k];
+    typename Base::Locate_type lt;
+    int li = 0;
+    const Face_handle loc = base.locate(v->point(), lt, li, hint);
+    if(lt == Base::VERTEX) {
+      on_duplicate(v, loc->vertex(li));
+      continue;
+    }
+    on_hit(loc);
+    if(lt == Base::EDGE)
+      on_hit(loc->neighbor(li));
+    const Vertex_handle fresh = base.insert(v->point(), lt, loc, li);
+    // Transplant: v takes the place of the vertex insertion made.
+    Face_handle f = fresh->face();
+    const Face_handle first = f;
+    do {
+      const int i = f->index(fresh);
+      f->set_vertex(i, v);
+      on_created(f);
+      stack.emplace_back(f, i);
+      stack.emplace_back(f, cw(i));
+      f = f->neighbor(ccw(i));
+    } while(f != first);
+    v->set_face(first);
+    tr.tds().delete_vertex(fresh);
+    hint = first;
+  }
+}
+
 // Open-addressing hash table keyed by object addresses (never null), with a value per key.
 // Grows by doubling; no deletion (the carve only ever adds).
 template <class Value>
@@ -390,50 +442,16 @@ public:
     committed_ = false;
   }
 
-  // Reinserts the carved vertices, keeping each vertex object: CGAL's location and insertion
-  // of the triangulation base class (no flips), then the new vertex object is replaced by the
-  // old one in its faces. The edges around each go on `stack`. `on_duplicate(v, w)` is called
-  // when v's point is already the point of vertex w (v is then deleted by the callee or left
-  // detached: it is not reinserted). Faces of the prediction that insertion modifies go to
-  // `modified`.
+  // Reinserts the carved vertices, keeping each vertex object (reinsert_vertex_objects()).
+  // `on_duplicate(v, w)` is called when v's point is already the point of vertex w (v is
+  // then deleted by the callee or left detached: it is not reinserted). Faces of the
+  // prediction that insertion modifies go to `modified`.
   template <class OnDuplicate>
   void reinsert(std::vector<Edge>& stack, std::vector<const void*>& modified, OnDuplicate on_duplicate)
   {
-    using Base = Triangulation_2<typename Triangulation::Geom_traits, Tds>;
-    Base& base = static_cast<Base&>(tr_);
-    std::vector<std::size_t> order(detached_.size());
-    for(std::size_t k = 0; k < order.size(); ++k)
-      order[k] = k;
-    sort_along_grid(order, [&](std::size_t k) -> const Point& { return detached_[k]->point(); }, false);
-    Face_handle hint = infinite_->face();
-    for(const std::size_t k : order) {
-      const Vertex_handle v = detached_[k];
-      typename Base::Locate_type lt;
-      int li = 0;
-      const Face_handle loc = base.locate(v->point(), lt, li, hint);
-      if(lt == Base::VERTEX) {
-        on_duplicate(v, loc->vertex(li));
-        continue;
-      }
-      note_modified(loc, modified);
-      if(lt == Base::EDGE)
-        note_modified(loc->neighbor(li), modified);
-      const Vertex_handle fresh = base.insert(v->point(), lt, loc, li);
-      // Transplant: v takes the place of the vertex insertion made.
-      Face_handle f = fresh->face();
-      const Face_handle first = f;
-      do {
-        const int i = f->index(fresh);
-        f->set_vertex(i, v);
-        created_set_.insert(&*f, 0);
-        stack.emplace_back(f, i);
-        stack.emplace_back(f, cw(i));
-        f = f->neighbor(ccw(i));
-      } while(f != first);
-      v->set_face(first);
-      tds_.delete_vertex(fresh);
-      hint = first;
-    }
+    reinsert_vertex_objects(
+        tr_, detached_, stack, [&](Face_handle f) { note_modified(f, modified); },
+        [&](Face_handle f) { created_set_.insert(&*f, 0); }, on_duplicate);
   }
 
   // Whether `f` was made by this repair (ears, infinite faces, hull flips, insertions).
@@ -631,7 +649,11 @@ private:
       loops_.push_back(std::move(loop));
     }
 
-    // The outer loop: the counterclockwise loop with the lowest-leftmost vertex of all.
+    // The outer loop: the counterclockwise loop with the lowest-leftmost vertex of all. An
+    // island may hang at that very vertex: then the outer loop is the one enclosing the
+    // larger area (the island lies inside it). Without this tie-break the choice followed the
+    // order of the loops, that is of face addresses, and an island taken for the outer loop
+    // made the real one an island, carved layer by layer past the budget.
     auto compare_xy = tr_.geom_traits().compare_xy_2_object();
     outer_ = none;
     if(outer_is_open) {
@@ -639,8 +661,13 @@ private:
         const Loop& loop = loops_[l];
         if(loop.dead || loop.turn != LEFT_TURN)
           continue;
-        if(outer_ == none || compare_xy(tail_point(loop.halfedges[loop.lowest]),
-                                        tail_point(loops_[outer_].halfedges[loops_[outer_].lowest])) == SMALLER)
+        if(outer_ == none) {
+          outer_ = l;
+          continue;
+        }
+        const Comparison_result c = compare_xy(tail_point(loop.halfedges[loop.lowest]),
+                                               tail_point(loops_[outer_].halfedges[loops_[outer_].lowest]));
+        if(c == SMALLER || (c == EQUAL && area(loop.halfedges) > area(loops_[outer_].halfedges)))
           outer_ = l;
       }
       if(outer_ == none)
@@ -742,6 +769,18 @@ private:
           }
         }
     return found;
+  }
+
+  // Twice the signed area of a loop, in double (only to tell an island from the outer loop).
+  double area(const std::vector<std::size_t>& loop) const
+  {
+    double sum = 0;
+    for(std::size_t k = 0; k < loop.size(); ++k) {
+      const Point& p = tail_point(loop[k]);
+      const Point& q = tail_point(loop[(k + 1) % loop.size()]);
+      sum += CGAL::to_double(p.x()) * CGAL::to_double(q.y()) - CGAL::to_double(q.x()) * CGAL::to_double(p.y());
+    }
+    return sum;
   }
 
   std::size_t lowest(const std::vector<std::size_t>& loop) const
