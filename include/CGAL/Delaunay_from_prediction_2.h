@@ -225,8 +225,8 @@ const char* carve_in_place(Triangulation& tr, const std::vector<typename Triangu
   return nullptr;
 }
 
-// Budget of Strategy::t_division for n vertices, in point insertions (|V_B| plus twice the
-// vertices of the bad regions): about a rebuild. Tests raise it to reach the repair on small,
+// Budget of Strategy::t_division for n vertices, in point insertions (|V_B| plus four times
+// the vertices to reinsert, see Region_repair::plan()): about a rebuild. Tests raise it to reach the repair on small,
 // badly damaged inputs.
 #ifndef CGAL_DELAUNAY_FROM_PREDICTION_T_DIVISION_BUDGET
 #define CGAL_DELAUNAY_FROM_PREDICTION_T_DIVISION_BUDGET(n) (n)
@@ -485,7 +485,7 @@ Statistics delaunay_from_prediction(const PointRange& points, const FaceRange& f
   stats.points_unused = unused.size();
   if(unused.empty() && !repair && !regions) {
     stats.faces_certified = result.number_of_faces() - internal::count_distinct(touched);
-  } else if(unused.empty()) {
+  } else if(unused.empty() && !regions) {
     // The predicted faces kept, less those the repair modified (flipped, or split by a
     // reinserted vertex); the faces it made are not predicted faces.
     for(const Face_handle f : touched)
@@ -495,7 +495,8 @@ Statistics delaunay_from_prediction(const PointRange& points, const FaceRange& f
     modified.erase(std::unique(modified.begin(), modified.end()), modified.end());
     stats.faces_certified = number_of_faces - stats.faces_carved - modified.size();
   } else {
-    // A predicted face survives if it was never flipped, is not one the repair made, and has
+    // A predicted face survives if it was never flipped, is not one a repair made (the
+    // t-division may also remove faces the carve made: counted here, not subtracted), and has
     // no new vertex (insertion recycles the faces it destroys for faces around the new
     // vertex).
     for(const Face_handle f : touched)

@@ -25,8 +25,9 @@
 // Why ear clipping and not a Delaunay triangulation of each hole, or Chan's structures:
 // holes are small (measured at 1e6 points moved by 0.1 spacing: 48,861 carved faces in 7,757
 // holes, about 6 faces each; 1% of a DT's faces deleted: single triangles and quadrilaterals),
-// where ear clipping's few orientation tests and no allocation beat building an auxiliary
-// triangulation per hole; the flips that follow make each hole Delaunay.
+// where ear clipping takes 0.25 us per hole and no allocation, an auxiliary CGAL triangulation
+// of the hole's points 1.16 us before it is glued in (bench_hole_filling.cpp, 1e6 points); the
+// flips that follow make each hole Delaunay.
 
 #ifndef CGAL_DELAUNAY_FROM_PREDICTION_INTERNAL_CARVE_REPAIR_H
 #define CGAL_DELAUNAY_FROM_PREDICTION_INTERNAL_CARVE_REPAIR_H

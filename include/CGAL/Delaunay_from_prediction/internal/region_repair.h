@@ -214,19 +214,22 @@ public:
   // Builds DT(V_B), finds the good regions and the fill of every hole, and checks that the
   // fill fits. `max_cost` bounds |V_B| plus the faces of the bad regions, then |V_B| plus
   // four times the vertices to reinsert (a reinsertion and its flips cost about four point
-  // insertions of a rebuild: measured at 1e6 points, 222,422 points reinserted into the fills
-  // with 4.8 flips each, about 3 us per point against 0.85 us for a rebuild). Returns null when commit() can run, otherwise
-  // why not (then `tr` is untouched).
+  // insertions of a rebuild: measured at 1e6 points, 222,422 points reinserted into the
+  // fills with 4.8 flips each, about 3 us per point against 0.85 us for a rebuild). Returns
+  // null when commit() can run, otherwise why not (then `tr` is untouched).
   const char* plan(std::size_t max_cost)
   {
     const std::size_t F = faces_.size();
     // 1. B and V_B.
-    is_boundary_.assign(F, 0);
     std::size_t faces_in_bad_regions = 0;
+    for(std::size_t k = 0; k < F; ++k)
+      faces_in_bad_regions += region_[k] != outside ? bad_region_[region_[k]] : 0;
+    if(faces_in_bad_regions == 0)
+      return nullptr; // nothing marked (a hull that is not convex was): nothing to repair
+    is_boundary_.assign(F, 0);
     for(std::size_t k = 0; k < F; ++k) {
       if(region_[k] == outside)
         continue;
-      faces_in_bad_regions += bad_region_[region_[k]];
       for(int i = 0; i < 3; ++i)
         if(region_[neighbor_[3 * k + i]] != region_[k]) {
           is_boundary_[k] = 1;
@@ -244,8 +247,6 @@ public:
             vb_.push_back(v);
           }
         }
-    if(faces_in_bad_regions == 0)
-      return nullptr; // nothing to repair (the hull test below needs no region bad either)
     if(vb_.size() + faces_in_bad_regions > max_cost)
       return "the bad regions of the t-division are too large for a local repair";
 
