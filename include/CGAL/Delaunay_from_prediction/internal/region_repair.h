@@ -329,36 +329,36 @@ public:
     // 5. Mark the images of the kept faces of B and of the kept infinite faces.
     dt_index_.reset(new Dt_index(boundary_dt_.tds().faces()));
     const Dt_index& dt_index = *dt_index_;
+    // The kept faces that may border a hole: kept faces of B and kept infinite faces.
+    std::vector<std::pair<std::uint32_t, Dt_face>> border;
+    for(std::size_t k = 0; k < F; ++k)
+      if(!removed_[k] && (region_[k] == outside || is_boundary_[k]))
+        border.emplace_back(std::uint32_t(k), image_of(k));
     owner_.assign(dt_index.size(), none);
-    for(std::size_t k = 0; k < F; ++k) {
-      if(removed_[k] || !(region_[k] == outside || is_boundary_[k]))
-        continue;
-      const Dt_face image = image_of(k);
-      std::uint32_t& owner = owner_[dt_index.of(image)];
+    for(const auto& b : border) {
+      std::uint32_t& owner = owner_[dt_index.of(b.second)];
       if(owner != none)
         return "two kept faces have the same vertices";
-      owner = std::uint32_t(k);
+      owner = b.first;
     }
 
     // 6. The fill: flood DT(V_B) from across every hole edge, never entering a marked face.
     in_fill_.assign(dt_index.size(), none);
     std::size_t hole_edges = 0, contacts = 0;
-    for(std::size_t k = 0; k < F; ++k) {
-      if(removed_[k] || !(region_[k] == outside || is_boundary_[k]))
-        continue;
-      const Face_handle f = faces_[k];
+    for(const auto& b : border) {
+      const Face_handle f = faces_[b.first];
       for(int i = 0; i < 3; ++i) {
-        if(!removed_[neighbor_[3 * k + i]])
+        if(!removed_[neighbor_[3 * b.first + i]])
           continue;
         ++hole_edges;
-        const Dt_face image = image_of(k);
-        const Dt_face across = image->neighbor(image->index(dt_of(f->vertex(i))));
-        if(owner_[dt_index.of(across)] != none)
+        const Dt_face across = b.second->neighbor(b.second->index(dt_of(f->vertex(i))));
+        const std::size_t ai = dt_index.of(across);
+        if(owner_[ai] != none)
           return "the kept faces do not fit the triangulation of the boundary vertices";
-        if(in_fill_[dt_index.of(across)] != none)
+        if(in_fill_[ai] != none)
           continue;
         ++holes_;
-        in_fill_[dt_index.of(across)] = std::uint32_t(fill_.size());
+        in_fill_[ai] = std::uint32_t(fill_.size());
         fill_.push_back(across);
         for(std::size_t head = fill_.size() - 1; head < fill_.size(); ++head)
           for(int j = 0; j < 3; ++j) {
