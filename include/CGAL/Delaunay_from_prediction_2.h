@@ -29,6 +29,7 @@
 #include <CGAL/Delaunay_from_prediction/internal/lawson_flip.h>
 #include <CGAL/Delaunay_from_prediction/internal/rebuild.h>
 #include <CGAL/Delaunay_from_prediction/internal/region_repair.h>
+#include <CGAL/Delaunay_from_prediction/internal/sort_addresses.h>
 #include <CGAL/Delaunay_from_prediction/internal/tds_certify.h>
 
 #include <CGAL/Named_function_parameters.h>
@@ -69,9 +70,28 @@ std::vector<const void*> sorted_addresses(const std::vector<Handle>& handles)
   std::vector<const void*> addresses(handles.size());
   for(std::size_t k = 0; k < handles.size(); ++k)
     addresses[k] = &*handles[k];
-  std::sort(addresses.begin(), addresses.end());
-  addresses.erase(std::unique(addresses.begin(), addresses.end()), addresses.end());
+  sort_unique_addresses(addresses);
   return addresses;
+}
+
+// Adds to `sorted` (addresses sorted without repeats) those of the objects of
+// `handles[first..]` for which `keep(address)` holds; `sorted` stays sorted without repeats.
+// Repeats are removed before `keep` is asked (a face flipped often is listed often).
+template <class Handle, class Keep>
+void merge_distinct(const std::vector<Handle>& handles, std::size_t first, Keep keep,
+                    std::vector<const void*>& sorted)
+{
+  std::vector<const void*> addresses;
+  addresses.reserve(handles.size() - std::min(first, handles.size()));
+  for(std::size_t k = first; k < handles.size(); ++k)
+    addresses.push_back(&*handles[k]);
+  sort_unique_addresses(addresses);
+  const std::size_t middle = sorted.size();
+  for(const void* a : addresses)
+    if(keep(a))
+      sorted.push_back(a);
+  std::inplace_merge(sorted.begin(), sorted.begin() + std::ptrdiff_t(middle), sorted.end());
+  sorted.erase(std::unique(sorted.begin(), sorted.end()), sorted.end());
 }
 
 // Number of distinct faces in `faces`, not counting those whose address is in `except`.
@@ -216,11 +236,11 @@ const char* carve_in_place(Triangulation& tr, const std::vector<typename Triangu
   const std::size_t untangled = touched.size(); // faces flipped before the carve
   if(!lawson_flip(tr, stack, max_flips, stats.flips, touched))
     return flip_budget_exhausted;
-  for(std::size_t k = 0; k < touched.size(); ++k)
-    if(k < untangled ? !carve.is_removed(touched[k]) : !carve.is_created(&*touched[k]))
+  for(std::size_t k = 0; k < untangled; ++k)
+    if(!carve.is_removed(touched[k]))
       modified.push_back(&*touched[k]);
-  std::sort(modified.begin(), modified.end());
-  modified.erase(std::unique(modified.begin(), modified.end()), modified.end());
+  sort_unique_addresses(modified);
+  merge_distinct(touched, untangled, [&](const void* f) { return !carve.is_created(f); }, modified);
   stats.faces_certified = stats.faces_in - stats.faces_carved - modified.size();
   return nullptr;
 }
@@ -467,8 +487,10 @@ Statistics delaunay_from_prediction(const PointRange& points, const FaceRange& f
           result.tds().delete_vertex(v);
           ++duplicates;
         });
+    // When the t-division does not pay (or cannot be planned), `result` is untouched: a
+    // valid triangulation after the carve, which the flips finish as with Strategy::carve.
     if(why != nullptr)
-      return build_from_scratch(why);
+      regions.reset();
     stats.duplicate_points += duplicates;
   }
   auto made_by_repair = [&](const void* f) {
@@ -488,11 +510,8 @@ Statistics delaunay_from_prediction(const PointRange& points, const FaceRange& f
   } else if(unused.empty() && !regions) {
     // The predicted faces kept, less those the repair modified (flipped, or split by a
     // reinserted vertex); the faces it made are not predicted faces.
-    for(const Face_handle f : touched)
-      if(!made_by_repair(&*f))
-        modified.push_back(&*f);
-    std::sort(modified.begin(), modified.end());
-    modified.erase(std::unique(modified.begin(), modified.end()), modified.end());
+    internal::sort_unique_addresses(modified);
+    internal::merge_distinct(touched, 0, [&](const void* f) { return !made_by_repair(f); }, modified);
     stats.faces_certified = number_of_faces - stats.faces_carved - modified.size();
   } else {
     // A predicted face survives if it was never flipped, is not one a repair made (the
@@ -501,7 +520,7 @@ Statistics delaunay_from_prediction(const PointRange& points, const FaceRange& f
     // vertex).
     for(const Face_handle f : touched)
       modified.push_back(&*f);
-    std::sort(modified.begin(), modified.end());
+    internal::sort_unique_addresses(modified);
     std::vector<const void*> new_vertices;
     if(!unused.empty())
       internal::insert_points(result, point_at, unused, stats, &new_vertices);
@@ -599,8 +618,9 @@ Statistics make_delaunay(Triangulation& tr, const NamedParameters& np = paramete
   std::vector<std::pair<Vertex_handle, Vertex_handle>> untangled;
   std::vector<Face_handle> touched;
   if(why == nullptr && divide) {
-    // Theorem 2.1 (region_repair.h); on failure `tr` is untouched, or a valid triangulation
-    // of the same vertices when the flip budget ran out: rebuilt below either way.
+    // Theorem 2.1 (region_repair.h). If it does not pay or cannot be planned, `tr` is
+    // untouched and the carve takes over; if the flip budget runs out, `tr` is a valid
+    // triangulation of the same vertices, rebuilt below.
     std::unique_ptr<internal::Region_repair<Triangulation>> regions;
     std::vector<const void*> modified;
     why = internal::repair_by_regions(tr, regions, bad, hull_is_convex, stack, true, region_size, modified,
@@ -611,15 +631,16 @@ Statistics make_delaunay(Triangulation& tr, const NamedParameters& np = paramete
       // Reinserted points make a few flips each, as in any incremental construction: they
       // count on top of the budget for the repair of the prediction.
       if(internal::lawson_flip(tr, stack, max_flips + 4 * regions->detached().size(), stats.flips, touched)) {
-        for(const Face_handle f : touched)
-          if(!regions->is_created(&*f))
-            modified.push_back(&*f);
-        std::sort(modified.begin(), modified.end());
-        modified.erase(std::unique(modified.begin(), modified.end()), modified.end());
+        internal::sort_unique_addresses(modified);
+        internal::merge_distinct(touched, 0, [&](const void* f) { return !regions->is_created(f); },
+                                 modified);
         stats.faces_certified = stats.faces_in - stats.faces_carved - modified.size();
         return stats;
       }
       why = internal::flip_budget_exhausted;
+    } else {
+      // Not worth dividing, or no plan: `tr` is untouched, the carve below takes over.
+      why = nullptr;
     }
   }
   if(why == nullptr && !bad.empty()) {

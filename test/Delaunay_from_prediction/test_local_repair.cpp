@@ -875,6 +875,51 @@ void carve_independent_of_memory_layout(const XYs& xy)
   }
 }
 
+// The import's first check, by Euler's formula (excess = 2V - 2 - F - h, import_prediction.h):
+// 15% of the faces deleted gives up before the spatial ordering (the statistics show no
+// reordering), with CGAL's result; a complete triangulation of points in convex position, whose
+// F = n - 2 faces are far below 2n, must not be taken for a prediction with holes (the hull
+// bound counts every point), nor must 3% deleted (an excess of about 0.06 n, under n/8).
+void euler_early_exit()
+{
+  using DT = DT_with_info<Epick>;
+  {
+    Scope scope("15% of the faces deleted");
+    const auto points = to_points<Epick>(uniform_xy(20000, 6001));
+    const Faces kept = DFP::delete_faces(DFP::delaunay_triangles(points), 0.15, 6002);
+    DT dt;
+    const DFP::Statistics s = DFP::delaunay_from_prediction(points, kept, dt);
+    DFP_CHECK_MSG(s.fell_back && std::string(s.fallback_reason) == "too many holes for a local repair", describe(s));
+    DFP_CHECK_MSG(!s.input_reordered, describe(s)); // stopped before the spatial ordering
+    check_is_cgal_delaunay(dt, points);
+  }
+  {
+    Scope scope("3% of the faces deleted");
+    const auto points = to_points<Epick>(uniform_xy(20000, 6003));
+    const Faces kept = DFP::delete_faces(DFP::delaunay_triangles(points), 0.03, 6004);
+    DT dt;
+    const DFP::Statistics s = DFP::delaunay_from_prediction(points, kept, dt);
+    DFP_CHECK_MSG(!s.fell_back && s.holes_refilled > 0, describe(s));
+    check_is_cgal_delaunay(dt, points);
+  }
+  for(const std::size_t n : {std::size_t(50), std::size_t(3000)}) {
+    Scope scope("points in convex position, n = ", n);
+    XYs xy;
+    for(std::size_t i = 0; i < n; ++i) { // on a parabola: no ties
+      const double x = double(i) / double(n) - 0.5;
+      xy.push_back(XY{x, x * x});
+    }
+    const auto points = to_points<Epick>(xy);
+    Faces faces = DFP::delaunay_triangles(points);
+    Random random{6005};
+    shuffle_with(faces, random);
+    DT dt;
+    const DFP::Statistics s = DFP::delaunay_from_prediction(points, faces, dt);
+    DFP_CHECK_MSG(!s.fell_back && s.faces_certified == n - 2, describe(s));
+    check_is_cgal_delaunay(dt, points);
+  }
+}
+
 // Strategy::t_division with tiny regions (4 to 64 faces) on many small random inputs, so that
 // most regions touch bad ones and the fills meet each other, the hull and the grid's
 // co-circular ties: make_delaunay after random moves (vertex handles and info kept), and
@@ -978,6 +1023,7 @@ int main()
     degenerate_inputs();
     isolated("t_division, tiny regions, small random inputs", [] { t_division_small_random_cases(); });
     isolated("carve, the same input in 24 memory layouts", [&] { carve_independent_of_memory_layout(uniform_5000); });
+    isolated("early exit of the import by Euler's formula", [] { euler_early_exit(); });
   }
   {
     Scope scope("Simple_cartesian<double> (inexact): terminates with a valid triangulation");

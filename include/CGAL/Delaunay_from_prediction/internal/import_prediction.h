@@ -27,6 +27,7 @@
 #include <CGAL/Delaunay_from_prediction/internal/vertex_info.h>
 
 #include <algorithm>
+#include <bitset>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -359,6 +360,10 @@ public:
       out.failure = "there are no faces";
       return;
     }
+    if(tolerant && too_many_holes_by_euler(points, n, triples)) {
+      out.failure = "too many holes for a local repair";
+      return;
+    }
     Spatial_order order;
     order.compute(tr.geom_traits(), points, n, triples);
     out.reordered = order.renumbered() || order.faces_sorted();
@@ -402,6 +407,81 @@ private:
         out += 3;
       }
     }
+  }
+
+  // Whether the faces leave too many holes for the local repair to beat a rebuild, told
+  // before the spatial ordering and the import are paid for (about a quarter of a rebuild at
+  // 1e6 points). By Euler's formula, F faces forming a disk with holes on V vertices, whose
+  // boundary cycles have L_0 (outer) and L_1, L_2, ... (holes) edges, satisfy
+  //   2V - 2 - F = L_0 + sum over the holes of (L_i - 2),
+  // and L_0 >= h, the number of hull vertices of the V points. So excess = 2V - 2 - F - h is 0
+  // for a triangulation and counts the missing faces: one per scattered deleted face, and
+  // between a third of and all the open half-edges of the holes (more for several pieces).
+  // The import gives up past n/4 open half-edges; with holes of three or four edges that is an
+  // excess of about n/12: past n/8 the local repair is not tried. A vertex where two fans meet
+  // only lowers the excess. Costs nothing for a prediction with about 2n faces; otherwise a pass
+  // over the triples and two over the points, h being bounded from above by the count of
+  // points not inside the octagon of their extremes in 8 directions (Akl-Toussaint) by a margin
+  // far above the rounding of the doubles used.
+  template <class PointIterator>
+  static bool too_many_holes_by_euler(PointIterator points, std::size_t n, const std::vector<std::uint32_t>& triples)
+  {
+    const std::size_t F = triples.size() / 3;
+    const std::size_t limit = n / 8 + 16;
+    if(F + limit + 2 >= 2 * n)
+      return false;
+    std::vector<std::uint64_t> used(n / 64 + 1, 0);
+    for(const std::uint32_t v : triples)
+      used[v >> 6] |= std::uint64_t(1) << (v & 63);
+    std::size_t V = 0;
+    for(const std::uint64_t word : used)
+      V += std::size_t(std::bitset<64>(word).count());
+    if(F + limit + 2 >= 2 * V)
+      return false;
+    auto is_used = [&](std::size_t v) { return ((used[v >> 6] >> (v & 63)) & 1) != 0; };
+    // The used points extreme in 8 directions, in counterclockwise order of the directions
+    // (+x, +x+y, +y, -x+y, -x, -x-y, -y, +x-y): a convex polygon inside the hull.
+    const double dir[8][2] = {{1, 0}, {1, 1}, {0, 1}, {-1, 1}, {-1, 0}, {-1, -1}, {0, -1}, {1, -1}};
+    double best[8], ex[8][2];
+    bool any = false;
+    for(std::size_t v = 0; v < n; ++v) {
+      if(!is_used(v))
+        continue;
+      const double x = CGAL::to_double(points[v].x()), y = CGAL::to_double(points[v].y());
+      for(int k = 0; k < 8; ++k) {
+        const double d = dir[k][0] * x + dir[k][1] * y;
+        if(!any || d > best[k]) {
+          best[k] = d;
+          ex[k][0] = x;
+          ex[k][1] = y;
+        }
+      }
+      any = true;
+    }
+    if(!any)
+      return false;
+    // Every hull vertex is on or outside that polygon; a point counts unless it is inside by
+    // a margin far above the rounding of the cross products, so the count bounds h from
+    // above. Stops as soon as the bound is too large for the excess to pass the limit.
+    const double extent = (std::max)(best[0] + best[4], best[2] + best[6]); // width or height
+    const double margin = 1e-9 * extent * extent;
+    const std::size_t max_hull = 2 * V - 2 - F - limit; // h above this: no conclusion
+    std::size_t hull_bound = 0;
+    for(std::size_t v = 0; v < n && hull_bound <= max_hull; ++v) {
+      if(!is_used(v))
+        continue;
+      const double x = CGAL::to_double(points[v].x()), y = CGAL::to_double(points[v].y());
+      bool inside = true;
+      for(int k = 0; k < 8 && inside; ++k) {
+        const double* a = ex[k];
+        const double* b = ex[(k + 1) & 7];
+        inside = (b[0] - a[0]) * (y - a[1]) - (b[1] - a[1]) * (x - a[0]) > margin;
+        if(a[0] == b[0] && a[1] == b[1])
+          inside = true; // the same point extreme in two directions: no edge
+      }
+      hull_bound += inside ? 0 : 1;
+    }
+    return hull_bound <= max_hull;
   }
 
   // The streaming pass, then the hull.
