@@ -879,7 +879,8 @@ void carve_independent_of_memory_layout(const XYs& xy)
 // 15% of the faces deleted gives up before the spatial ordering (the statistics show no
 // reordering), with CGAL's result; a complete triangulation of points in convex position, whose
 // F = n - 2 faces are far below 2n, must not be taken for a prediction with holes (the hull
-// bound counts every point), nor must 3% deleted (an excess of about 0.06 n, under n/8).
+// bound counts every point), nor must 3% deleted (an excess of about 0.06 n, under n/8), which
+// stops the import at once without local repair (Strategy::flips: past n/64).
 void euler_early_exit()
 {
   using DT = DT_with_info<Epick>;
@@ -901,13 +902,21 @@ void euler_early_exit()
     const DFP::Statistics s = DFP::delaunay_from_prediction(points, kept, dt);
     DFP_CHECK_MSG(!s.fell_back && s.holes_refilled > 0, describe(s));
     check_is_cgal_delaunay(dt, points);
+    // Without local repair (Strategy::flips) any excess above n/64 stops the import at once.
+    DT flipped;
+    const DFP::Statistics f =
+        DFP::delaunay_from_prediction(points, kept, flipped, DFP::parameters::strategy(DFP::Strategy::flips));
+    DFP_CHECK_MSG(f.fell_back && !f.input_reordered, describe(f));
+    check_is_cgal_delaunay(flipped, points);
   }
-  for(const std::size_t n : {std::size_t(50), std::size_t(3000)}) {
-    Scope scope("points in convex position, n = ", n);
+  for(const std::size_t n : {std::size_t(50), std::size_t(3000), std::size_t(1200)}) {
+    // On a parabola (no ties), or a grid of 3 rows: 800 of its 1200 points lie on the hull,
+    // 796 of them inside hull edges, which the count must include.
+    Scope scope(n == 1200 ? "grid of 400 x 3 points" : "points in convex position, n = ", n);
     XYs xy;
-    for(std::size_t i = 0; i < n; ++i) { // on a parabola: no ties
+    for(std::size_t i = 0; i < n; ++i) {
       const double x = double(i) / double(n) - 0.5;
-      xy.push_back(XY{x, x * x});
+      xy.push_back(n == 1200 ? XY{double(i / 3), double(i % 3)} : XY{x, x * x});
     }
     const auto points = to_points<Epick>(xy);
     Faces faces = DFP::delaunay_triangles(points);
@@ -915,7 +924,11 @@ void euler_early_exit()
     shuffle_with(faces, random);
     DT dt;
     const DFP::Statistics s = DFP::delaunay_from_prediction(points, faces, dt);
-    DFP_CHECK_MSG(!s.fell_back && s.faces_certified == n - 2, describe(s));
+    DFP_CHECK_MSG(!s.fell_back && s.faces_certified == faces.size(), describe(s));
+    check_is_cgal_delaunay(dt, points);
+    const DFP::Statistics f =
+        DFP::delaunay_from_prediction(points, faces, dt, DFP::parameters::strategy(DFP::Strategy::flips));
+    DFP_CHECK_MSG(!f.fell_back && f.faces_certified == faces.size(), describe(f));
     check_is_cgal_delaunay(dt, points);
   }
 }

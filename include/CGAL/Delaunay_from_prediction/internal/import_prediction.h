@@ -360,8 +360,12 @@ public:
       out.failure = "there are no faces";
       return;
     }
-    if(tolerant && too_many_holes_by_euler(points, n, triples)) {
-      out.failure = "too many holes for a local repair";
+    // Faces missing, told by counting (see missing_faces_exceed()): past n/8 the local repair
+    // would not pay; without it, past n/64 the faces cannot be a triangulation (any excess
+    // shows that, the margin keeps the count off the common case of about 2n faces).
+    if(missing_faces_exceed(points, n, triples, tolerant ? n / 8 + 16 : n / 64 + 16)) {
+      out.failure = tolerant ? "too many holes for a local repair"
+                             : "the faces leave holes, or do not form a triangulation of their vertices";
       return;
     }
     Spatial_order order;
@@ -409,25 +413,26 @@ private:
     }
   }
 
-  // Whether the faces leave too many holes for the local repair to beat a rebuild, told
-  // before the spatial ordering and the import are paid for (about a quarter of a rebuild at
-  // 1e6 points). By Euler's formula, F faces forming a disk with holes on V vertices, whose
+  // Whether the faces surely lack more than `limit` faces of a triangulation of the points
+  // they use, told before the spatial ordering and the import are paid for (about a quarter
+  // of a rebuild at 1e6 points). By Euler's formula, F faces forming a disk with holes on V vertices, whose
   // boundary cycles have L_0 (outer) and L_1, L_2, ... (holes) edges, satisfy
   //   2V - 2 - F = L_0 + sum over the holes of (L_i - 2),
   // and L_0 >= h, the number of hull vertices of the V points. So excess = 2V - 2 - F - h is 0
   // for a triangulation and counts the missing faces: one per scattered deleted face, and
   // between a third of and all the open half-edges of the holes (more for several pieces).
   // The import gives up past n/4 open half-edges; with holes of three or four edges that is an
-  // excess of about n/12: past n/8 the local repair is not tried. A vertex where two fans meet
-  // only lowers the excess. Costs nothing for a prediction with about 2n faces; otherwise a pass
-  // over the triples and two over the points, h being bounded from above by the count of
-  // points not inside the octagon of their extremes in 8 directions (Akl-Toussaint) by a margin
-  // far above the rounding of the doubles used.
+  // excess of about n/12: the tolerant import passes a limit of n/8. A vertex where two fans
+  // meet only lowers the excess. Costs nothing for a prediction with about 2n faces (more than
+  // 2n - limit); otherwise a pass
+  // over the triples and two over the points: the points not inside the octagon of their
+  // extremes in 8 directions (Akl-Toussaint) are the only candidates for the hull, whose
+  // boundary points are then counted exactly.
   template <class PointIterator>
-  static bool too_many_holes_by_euler(PointIterator points, std::size_t n, const std::vector<std::uint32_t>& triples)
+  static bool missing_faces_exceed(PointIterator points, std::size_t n, const std::vector<std::uint32_t>& triples,
+                                   std::size_t limit)
   {
     const std::size_t F = triples.size() / 3;
-    const std::size_t limit = n / 8 + 16;
     if(F + limit + 2 >= 2 * n)
       return false;
     std::vector<std::uint64_t> used(n / 64 + 1, 0);
@@ -460,14 +465,16 @@ private:
     }
     if(!any)
       return false;
-    // Every hull vertex is on or outside that polygon; a point counts unless it is inside by
-    // a margin far above the rounding of the cross products, so the count bounds h from
-    // above. Stops as soon as the bound is too large for the excess to pass the limit.
+    // Every hull vertex is on or outside that polygon: only the points not inside it by a
+    // margin far above the rounding of the cross products can be (about 1.4 sqrt(n) of
+    // uniform points in a square, the slivers along its sides). Stops when there are so many
+    // that the count below would cost more than it can save.
     const double extent = (std::max)(best[0] + best[4], best[2] + best[6]); // width or height
     const double margin = 1e-9 * extent * extent;
     const std::size_t max_hull = 2 * V - 2 - F - limit; // h above this: no conclusion
-    std::size_t hull_bound = 0;
-    for(std::size_t v = 0; v < n && hull_bound <= max_hull; ++v) {
+    const std::size_t max_candidates = 16 * std::size_t(std::sqrt(double(n))) + 1024;
+    std::vector<Point> candidates;
+    for(std::size_t v = 0; v < n && candidates.size() <= max_candidates; ++v) {
       if(!is_used(v))
         continue;
       const double x = CGAL::to_double(points[v].x()), y = CGAL::to_double(points[v].y());
@@ -479,9 +486,42 @@ private:
         if(a[0] == b[0] && a[1] == b[1])
           inside = true; // the same point extreme in two directions: no edge
       }
-      hull_bound += inside ? 0 : 1;
+      if(!inside)
+        candidates.push_back(points[v]);
     }
-    return hull_bound <= max_hull;
+    if(candidates.size() > max_candidates) // the list is cut short
+      return false;
+    if(candidates.size() <= max_hull)
+      return true;
+    // h exactly, with the traits' predicates: the hull of the candidates (Andrew's monotone
+    // chain), then the candidates on its boundary (vertices and points on its edges, which
+    // are hull vertices of a triangulation too).
+    const typename Triangulation::Geom_traits gt;
+    auto orientation = gt.orientation_2_object();
+    auto compare_xy = gt.compare_xy_2_object();
+    std::sort(candidates.begin(), candidates.end(),
+              [&](const Point& p, const Point& q) { return compare_xy(p, q) == SMALLER; });
+    std::vector<const Point*> hull;
+    for(int pass = 0; pass < 2; ++pass) { // lower chain left to right, upper right to left
+      const std::size_t base = hull.size();
+      for(std::size_t k = 0; k < candidates.size(); ++k) {
+        const Point& p = candidates[pass == 0 ? k : candidates.size() - 1 - k];
+        while(hull.size() >= base + 2 && orientation(*hull[hull.size() - 2], *hull.back(), p) != LEFT_TURN)
+          hull.pop_back();
+        hull.push_back(&p);
+      }
+      hull.pop_back(); // the last point starts the other chain
+    }
+    if(hull.size() < 3 || hull.size() > max_hull)
+      return false;
+    std::size_t h = 0;
+    for(const Point& p : candidates)
+      for(std::size_t k = 0; k < hull.size(); ++k)
+        if(orientation(*hull[k], *hull[(k + 1) % hull.size()], p) == COLLINEAR) {
+          ++h;
+          break;
+        }
+    return h <= max_hull;
   }
 
   // The streaming pass, then the hull.
