@@ -42,8 +42,10 @@ enum class Strategy {
   /// (named parameter `region_size`); build the Delaunay triangulation of the vertices on
   /// region boundaries; keep the regions with no failing test whose boundary faces are faces
   /// of it; replace the others by its faces and reinsert their inner vertices; then Lawson
-  /// flips. A prediction with holes or overlaps first gets them filled as by `carve`. Slower
-  /// than `carve` on every input measured (see the user manual): selectable for comparison.
+  /// flips. A prediction with holes or overlaps first gets them filled as by `carve`. When
+  /// the damage would spoil most regions, or the division cannot be planned, the repair is
+  /// left to `carve` (the flips, after a fill). Slower than `carve` on every input measured
+  /// (see the user manual): selectable for comparison.
   t_division,
   /// ignore the prediction and rebuild (for comparisons).
   rebuild
