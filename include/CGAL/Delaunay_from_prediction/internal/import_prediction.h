@@ -415,19 +415,18 @@ private:
 
   // Whether the faces surely lack more than `limit` faces of a triangulation of the points
   // they use, told before the spatial ordering and the import are paid for (about a quarter
-  // of a rebuild at 1e6 points). By Euler's formula, F faces forming a disk with holes on V vertices, whose
-  // boundary cycles have L_0 (outer) and L_1, L_2, ... (holes) edges, satisfy
+  // of a rebuild at 1e6 points). By Euler's formula, F faces forming a disk with holes on V
+  // vertices, whose boundary cycles have L_0 (outer) and L_1, L_2, ... (holes) edges, satisfy
   //   2V - 2 - F = L_0 + sum over the holes of (L_i - 2),
-  // and L_0 >= h, the number of hull vertices of the V points. So excess = 2V - 2 - F - h is 0
-  // for a triangulation and counts the missing faces: one per scattered deleted face, and
+  // and L_0 >= h, the number of points on the hull of the V points. So excess = 2V - 2 - F - h
+  // is 0 for a triangulation and counts the missing faces: one per scattered deleted face,
   // between a third of and all the open half-edges of the holes (more for several pieces).
-  // The import gives up past n/4 open half-edges; with holes of three or four edges that is an
-  // excess of about n/12: the tolerant import passes a limit of n/8. A vertex where two fans
-  // meet only lowers the excess. Costs nothing for a prediction with about 2n faces (more than
-  // 2n - limit); otherwise a pass
-  // over the triples and two over the points: the points not inside the octagon of their
-  // extremes in 8 directions (Akl-Toussaint) are the only candidates for the hull, whose
-  // boundary points are then counted exactly.
+  // The import gives up past n/4 open half-edges; with holes of three or four edges that is
+  // an excess of about n/12: the tolerant import passes a limit of n/8. A vertex where two
+  // fans meet only lowers the excess. Costs nothing for a prediction with more than
+  // 2n - limit faces; otherwise a pass over the triples and two over the points: the points
+  // not inside the octagon of their extremes in 8 directions (Akl-Toussaint) are the only
+  // candidates for the hull, whose boundary points are then counted exactly.
   template <class PointIterator>
   static bool missing_faces_exceed(PointIterator points, std::size_t n, const std::vector<std::uint32_t>& triples,
                                    std::size_t limit)
