@@ -246,8 +246,8 @@ const char* carve_in_place(Triangulation& tr, const std::vector<typename Triangu
 }
 
 // Budget of Strategy::t_division for n vertices, in point insertions (|V_B| plus four times
-// the vertices to reinsert, see Region_repair::plan()): about a rebuild. Tests raise it to reach the repair on small,
-// badly damaged inputs.
+// the vertices to reinsert, see Region_repair::plan()): about a rebuild. Tests raise it to
+// reach the repair on small, badly damaged inputs.
 #ifndef CGAL_DELAUNAY_FROM_PREDICTION_T_DIVISION_BUDGET
 #define CGAL_DELAUNAY_FROM_PREDICTION_T_DIVISION_BUDGET(n) (n)
 #endif

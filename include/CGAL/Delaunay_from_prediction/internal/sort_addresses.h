@@ -29,17 +29,17 @@ inline void sort_unique_addresses(std::vector<const void*>& addresses)
     std::sort(addresses.begin(), addresses.end(),
               [&](const void* a, const void* b) { return value(a) < value(b); });
   } else {
-    std::uint64_t low = value(addresses[0]), high = low;
+    // Objects of the containers sorted here are at least 8-byte aligned: the 3 low bits of
+    // an offset are 0 and are skipped; addresses that differ there still sort right, by the
+    // comparison fallback below (never taken for CGAL's faces).
+    const std::uint64_t first = value(addresses[0]);
+    std::uint64_t low = first, high = first, low_bits_differ = 0;
     for(const void* p : addresses) {
       low = std::min(low, value(p));
       high = std::max(high, value(p));
+      low_bits_differ |= (value(p) ^ first) & 7;
     }
-    // Objects of the containers sorted here are at least 8-byte aligned: the 3 low bits of
-    // an offset are 0 and are skipped; a misaligned address still sorts right, by the
-    // comparison fallback below (never taken for CGAL's faces).
-    bool aligned = true;
-    for(const void* p : addresses)
-      aligned = aligned && ((value(p) - low) & 7) == 0;
+    const bool aligned = low_bits_differ == 0;
     const std::uint64_t span = (high - low) >> 3;
     int bits = 0;
     while(bits < 64 && (span >> bits) != 0)
