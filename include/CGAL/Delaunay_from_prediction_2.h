@@ -63,48 +63,16 @@ constexpr const char* flip_budget_exhausted = "the flip budget was exhausted";
 // Statistics::fallback_reason for Strategy::rebuild.
 constexpr const char* rebuild_requested = "the rebuild strategy was chosen";
 
-// The addresses of the objects behind `handles`, sorted, without repeats.
-template <class Handle>
-std::vector<const void*> sorted_addresses(const std::vector<Handle>& handles)
-{
-  std::vector<const void*> addresses(handles.size());
-  for(std::size_t k = 0; k < handles.size(); ++k)
-    addresses[k] = &*handles[k];
-  sort_unique_addresses(addresses);
-  return addresses;
-}
-
-// Adds to `sorted` (addresses sorted without repeats) those of the objects of
-// `handles[first..]` for which `keep(address)` holds; `sorted` stays sorted without repeats.
-// Repeats are removed before `keep` is asked (a face flipped often is listed often).
-template <class Handle, class Keep>
-void merge_distinct(const std::vector<Handle>& handles, std::size_t first, Keep keep,
-                    std::vector<const void*>& sorted)
-{
-  std::vector<const void*> addresses;
-  addresses.reserve(handles.size() - std::min(first, handles.size()));
-  for(std::size_t k = first; k < handles.size(); ++k)
-    addresses.push_back(&*handles[k]);
-  sort_unique_addresses(addresses);
-  const std::size_t middle = sorted.size();
-  for(const void* a : addresses)
-    if(keep(a))
-      sorted.push_back(a);
-  std::inplace_merge(sorted.begin(), sorted.begin() + std::ptrdiff_t(middle), sorted.end());
-  sorted.erase(std::unique(sorted.begin(), sorted.end()), sorted.end());
-}
-
 // Number of distinct faces in `faces`, not counting those whose address is in `except`.
 template <class Face_handle>
 std::size_t count_distinct(const std::vector<Face_handle>& faces,
                            std::vector<const void*> except = std::vector<const void*>())
 {
-  const std::vector<const void*> addresses = sorted_addresses(faces);
+  using Face = std::remove_cv_t<std::remove_reference_t<decltype(*faces.front())>>;
   std::sort(except.begin(), except.end());
-  std::size_t count = 0;
-  for(const void* a : addresses)
-    count += std::binary_search(except.begin(), except.end(), a) ? 0 : 1;
-  return count;
+  return count_distinct_addresses<Face>(std::vector<const void*>(), faces, 0, [&](const void* a) {
+    return !std::binary_search(except.begin(), except.end(), a);
+  });
 }
 
 // Limits of the local repair for `n` points. Measured at 1e6 points (moves of 0.1 spacing:
@@ -239,9 +207,10 @@ const char* carve_in_place(Triangulation& tr, const std::vector<typename Triangu
   for(std::size_t k = 0; k < untangled; ++k)
     if(!carve.is_removed(touched[k]))
       modified.push_back(&*touched[k]);
-  sort_unique_addresses(modified);
-  merge_distinct(touched, untangled, [&](const void* f) { return !carve.is_created(f); }, modified);
-  stats.faces_certified = stats.faces_in - stats.faces_carved - modified.size();
+  stats.faces_certified =
+      stats.faces_in - stats.faces_carved -
+      count_distinct_addresses<typename Triangulation::Face>(modified, touched, untangled,
+                                                             [&](const void* f) { return !carve.is_created(f); });
   return nullptr;
 }
 
@@ -510,9 +479,9 @@ Statistics delaunay_from_prediction(const PointRange& points, const FaceRange& f
   } else if(unused.empty() && !regions) {
     // The predicted faces kept, less those the repair modified (flipped, or split by a
     // reinserted vertex); the faces it made are not predicted faces.
-    internal::sort_unique_addresses(modified);
-    internal::merge_distinct(touched, 0, [&](const void* f) { return !made_by_repair(f); }, modified);
-    stats.faces_certified = number_of_faces - stats.faces_carved - modified.size();
+    stats.faces_certified = number_of_faces - stats.faces_carved -
+                            internal::count_distinct_addresses<typename DT::Face>(
+                                modified, touched, 0, [&](const void* f) { return !made_by_repair(f); });
   } else {
     // A predicted face survives if it was never flipped, is not one a repair made (the
     // t-division may also remove faces the carve made: counted here, not subtracted), and has
@@ -631,10 +600,9 @@ Statistics make_delaunay(Triangulation& tr, const NamedParameters& np = paramete
       // Reinserted points make a few flips each, as in any incremental construction: they
       // count on top of the budget for the repair of the prediction.
       if(internal::lawson_flip(tr, stack, max_flips + 4 * regions->detached().size(), stats.flips, touched)) {
-        internal::sort_unique_addresses(modified);
-        internal::merge_distinct(touched, 0, [&](const void* f) { return !regions->is_created(f); },
-                                 modified);
-        stats.faces_certified = stats.faces_in - stats.faces_carved - modified.size();
+        stats.faces_certified = stats.faces_in - stats.faces_carved -
+                                internal::count_distinct_addresses<typename Triangulation::Face>(
+                                    modified, touched, 0, [&](const void* f) { return !regions->is_created(f); });
         return stats;
       }
       why = internal::flip_budget_exhausted;

@@ -124,14 +124,17 @@ void undo_untangling(Triangulation& tr,
 // Inserts `vertices` (vertex objects with no face) into the valid triangulation `tr`, keeping
 // each object, so that handles and info() survive: CGAL's location and insertion of the
 // triangulation base class (no flips), then the vertex object insertion made is replaced by
-// the old one in its faces. In a grid order, each located from the last. The edges around
+// the old one in its faces. In a grid order, each located from the last, or from the face of
+// `(*near)[k]` for vertices[k] when that is a vertex with a face (a former neighbour: a walk
+// of a face or two instead of the ten or so between grid neighbours). The edges around
 // each go on `stack` (Lawson's algorithm makes them Delaunay). `on_hit(f)` is called for the
 // faces insertion destroys or splits, `on_created(f)` for the faces around each reinserted
 // vertex, `on_duplicate(v, w)` instead of inserting v when its point is already vertex w's.
 template <class Triangulation, class OnHit, class OnCreated, class OnDuplicate>
 void reinsert_vertex_objects(Triangulation& tr, const std::vector<typename Triangulation::Vertex_handle>& vertices,
                              std::vector<std::pair<typename Triangulation::Face_handle, int>>& stack,
-                             OnHit on_hit, OnCreated on_created, OnDuplicate on_duplicate)
+                             OnHit on_hit, OnCreated on_created, OnDuplicate on_duplicate,
+                             const std::vector<typename Triangulation::Vertex_handle>* near = nullptr)
 {
   using Base = Triangulation_2<typename Triangulation::Geom_traits, typename Triangulation::Triangulation_data_structure>;
   using Vertex_handle = typename Triangulation::Vertex_handle;
@@ -147,6 +150,8 @@ void reinsert_vertex_objects(Triangulation& tr, const std::vector<typename Trian
     const Vertex_handle v = vertices[k];
     typename Base::Locate_type lt;
     int li = 0;
+    if(near != nullptr && (*near)[k] != Vertex_handle() && (*near)[k]->face() != Face_handle())
+      hint = (*near)[k]->face();
     const Face_handle loc = base.locate(v->point(), lt, li, hint);
     if(lt == Base::VERTEX) {
       on_duplicate(v, loc->vertex(li));
@@ -206,6 +211,16 @@ public:
   }
 
   bool contains(const void* key) const { return find(key) != nullptr; }
+
+  // Makes room for `count` keys in all without growing (each growth rehashes every key).
+  void reserve(std::size_t count)
+  {
+    std::size_t capacity = keys_.size();
+    while(2 * count > capacity)
+      capacity *= 2;
+    if(capacity > keys_.size())
+      resize(capacity);
+  }
   std::size_t size() const { return size_; }
 
   void clear()
@@ -290,6 +305,9 @@ public:
   // Returns null when every hole has a fill; otherwise why the repair gives up.
   const char* plan(const Carve_limits& limits)
   {
+    // A star has about 6 faces, each carved face opens about one half-edge.
+    removed_.reserve(6 * pending_.size());
+    position_.reserve(6 * pending_.size() + given_open_.size());
     for(rounds_ = 1; rounds_ <= limits.max_rounds; ++rounds_) {
       for(std::size_t k = 0; k < pending_.size(); ++k)
         carve_faces_around(pending_[k]);
@@ -450,9 +468,10 @@ public:
   template <class OnDuplicate>
   void reinsert(std::vector<Edge>& stack, std::vector<const void*>& modified, OnDuplicate on_duplicate)
   {
+    created_set_.reserve(created_set_.size() + 6 * detached_.size()); // about 6 faces around each
     reinsert_vertex_objects(
         tr_, detached_, stack, [&](Face_handle f) { note_modified(f, modified); },
-        [&](Face_handle f) { created_set_.insert(&*f, 0); }, on_duplicate);
+        [&](Face_handle f) { created_set_.insert(&*f, 0); }, on_duplicate, &near_);
   }
 
   // Whether `f` was made by this repair (ears, infinite faces, hull flips, insertions).
@@ -460,6 +479,7 @@ public:
 
 private:
   static constexpr std::size_t none = std::size_t(-1);
+  static constexpr std::size_t unknown = std::size_t(-2);
 
   struct Ear
   {
@@ -508,7 +528,7 @@ private:
 
   void carve_faces_around(Vertex_handle v)
   {
-    std::vector<Face_handle> faces;
+    std::vector<Face_handle>& faces = scratch_faces_;
     faces_around(v, faces);
     for(const Face_handle f : faces)
       remove(f);
@@ -553,10 +573,12 @@ private:
       alive_.push_back(1);
       loop_of_.push_back(none);
     };
+    const bool loops_may_change = !loops_.empty(); // none in the first round
     for(std::size_t k = first_new; k < traced_; ++k) {
       const Face_handle f = removed_list_[k];
       for(int i = 0; i < 3; ++i) {
-        changed.insert(&*f->vertex(i), 0);
+        if(loops_may_change)
+          changed.insert(&*f->vertex(i), 0);
         if(const std::size_t* at = position_.find(halfedge_key(Edge(f, i))))
           alive_[*at] = 0;
         const Face_handle g = f->neighbor(i);
@@ -599,6 +621,14 @@ private:
     std::vector<std::vector<std::size_t>> cycles;
     std::vector<std::size_t> group_of_cycle;
     std::vector<std::size_t> cycle;
+    // The successors first, each independent of the others, so that the cache misses of
+    // their walks overlap (following a cycle makes each walk wait for the one before); a
+    // half-edge not listed, on a loop left as it was, is looked up on the way.
+    std::vector<std::size_t> successor(open_.size(), unknown);
+    for(const std::size_t k : to_trace)
+      if(alive_[k] && loop_of_[k] == none)
+        successor[k] = next_open(k);
+    auto next = [&](std::size_t k) { return successor[k] != unknown ? successor[k] : next_open(k); };
     for(const std::size_t k : to_trace) {
       if(!alive_[k] || loop_of_[k] != none)
         continue;
@@ -608,7 +638,7 @@ private:
       do {
         loop_of_[at] = loops_.size(); // provisional: marks it seen
         cycle.push_back(at);
-        at = next_open(at);
+        at = next(at);
         if(at == none) {
           closed = false;
           break;
@@ -922,18 +952,30 @@ private:
 
   // The vertices left without a kept face: those whose star was carved, and those all of
   // whose faces went with their neighbours' stars. Each is reinserted.
+  // Each gets a vertex of a face carved with it that keeps faces, if any, to start the
+  // location of its point from.
   void collect_isolated_vertices()
   {
-    Address_table<char> listed;
+    Address_table<char> listed; // 1: on a cycle, 0: detached
     for(std::size_t k = 0; k < open_.size(); ++k)
       if(alive_[k])
-        listed.insert(&*tail_vertex(k), 0); // cycle vertices keep faces
+        listed.insert(&*tail_vertex(k), 1); // cycle vertices keep faces
     detached_.clear();
+    near_.clear();
     for(const Face_handle f : removed_list_)
       for(int i = 0; i < 3; ++i) {
         const Vertex_handle v = f->vertex(i);
-        if(v != infinite_ && listed.insert(&*v, 0).second)
-          detached_.push_back(v);
+        if(v == infinite_ || !listed.insert(&*v, 0).second)
+          continue;
+        detached_.push_back(v);
+        near_.push_back(Vertex_handle());
+        for(const int j : {ccw(i), cw(i)}) {
+          const char* on_cycle = listed.find(&*f->vertex(j));
+          if(on_cycle != nullptr && *on_cycle == 1) {
+            near_.back() = f->vertex(j);
+            break;
+          }
+        }
       }
   }
 
@@ -955,9 +997,14 @@ private:
         if(candidates.contains(&*v) && kept.insert(&*v, 0).second)
           v->set_face(f);
       }
-    detached_.erase(std::remove_if(detached_.begin(), detached_.end(),
-                                   [&](const Vertex_handle v) { return kept.contains(&*v); }),
-                    detached_.end());
+    std::size_t left = 0;
+    for(std::size_t k = 0; k < detached_.size(); ++k)
+      if(!kept.contains(&*detached_[k])) {
+        detached_[left] = detached_[k];
+        near_[left++] = near_[k];
+      }
+    detached_.resize(left);
+    near_.resize(left);
   }
 
   void record_undo_log()
@@ -984,6 +1031,7 @@ private:
   std::vector<Face_handle> removed_list_;
   Address_table<char> detached_set_;     // vertices queued for carving their star
   std::vector<Vertex_handle> pending_, detached_;
+  std::vector<Vertex_handle> near_;       // per detached vertex: a cycle vertex near it, or null
   std::vector<Edge> given_open_;
   std::vector<Edge> open_;                // every half-edge ever found open, in order
   std::vector<char> alive_;               // whether it still is (its face not carved since)
@@ -996,6 +1044,7 @@ private:
   std::vector<Undo_entry> undo_;
   // Scratch space of fill(), reused across holes.
   std::vector<Vertex_handle> scratch_vertices_;
+  std::vector<Face_handle> scratch_faces_; // of carve_faces_around()
   std::vector<std::size_t> scratch_edges_, scratch_prev_, scratch_next_;
   std::vector<std::array<std::size_t, 3>> scratch_ears_;
   Address_table<std::size_t> old_index_;
