@@ -107,26 +107,38 @@ bool has_duplicate_of(const Triangulation& tr,
       return b;
     };
     std::size_t size = 64;
-    while(size < 4 * candidates.size())
+    int log_size = 6;
+    while(size < 4 * candidates.size()) {
       size <<= 1;
+      ++log_size;
+    }
     struct Slot { std::uint64_t x, y; const void* v; };
     std::vector<Slot> table(size, Slot{0, 0, nullptr});
-    auto slot_of = [&](std::uint64_t x, std::uint64_t y) {
-      std::size_t i = std::size_t((x * 0x9E3779B97F4A7C15ull) ^ (y * 0xC2B2AE3D27D4EB4Full)) & (size - 1);
+    auto hash = [](std::uint64_t x, std::uint64_t y) { return (x * 0x9E3779B97F4A7C15ull) ^ (y * 0xC2B2AE3D27D4EB4Full); };
+    auto slot_of = [&](std::uint64_t x, std::uint64_t y, std::uint64_t h) {
+      std::size_t i = std::size_t(h) & (size - 1);
       while(table[i].v != nullptr && (table[i].x != x || table[i].y != y))
         i = (i + 1) & (size - 1);
       return i;
     };
+    // The table outgrows the caches (24 bytes a slot); a filter of 4 bits a slot, by other
+    // bits of the hash, stays in them and turns away almost every vertex before the table.
+    const int log_filter = log_size + 2;
+    std::vector<std::uint64_t> filter((std::size_t(1) << log_filter) / 64 + 1, 0);
+    auto filter_bit = [&](std::uint64_t h) { return std::size_t(h >> (64 - log_filter)); };
     for(const auto& v : candidates) {
-      const std::uint64_t x = bits(v->point().x()), y = bits(v->point().y());
-      Slot& s = table[slot_of(x, y)];
+      const std::uint64_t x = bits(v->point().x()), y = bits(v->point().y()), h = hash(x, y);
+      Slot& s = table[slot_of(x, y, h)];
       if(s.v != nullptr)
         return true;
       s = Slot{x, y, &*v};
+      filter[filter_bit(h) >> 6] |= std::uint64_t(1) << (filter_bit(h) & 63);
     }
     for(auto v = tr.finite_vertices_begin(); v != tr.finite_vertices_end(); ++v) {
-      const std::uint64_t x = bits(v->point().x()), y = bits(v->point().y());
-      const Slot& s = table[slot_of(x, y)];
+      const std::uint64_t x = bits(v->point().x()), y = bits(v->point().y()), h = hash(x, y);
+      if(((filter[filter_bit(h) >> 6] >> (filter_bit(h) & 63)) & 1) == 0)
+        continue;
+      const Slot& s = table[slot_of(x, y, h)];
       if(s.v != nullptr && s.v != &*v)
         return true;
     }

@@ -35,6 +35,7 @@
 #include <CGAL/Delaunay_from_prediction/internal/ear_clipping.h>
 #include <CGAL/Delaunay_from_prediction/internal/hull_repair.h>
 #include <CGAL/Delaunay_from_prediction/internal/predicates.h>
+#include <CGAL/Delaunay_from_prediction/internal/sort_addresses.h>
 #include <CGAL/Delaunay_from_prediction/internal/spatial_order.h>
 #include <CGAL/Delaunay_from_prediction/internal/tds_certify.h>
 
@@ -76,7 +77,15 @@ void untangle_by_flips(Triangulation& tr, std::vector<typename Triangulation::Fa
   auto is_ccw = [&](Face_handle f) {
     return orientation(f->vertex(0)->point(), f->vertex(1)->point(), f->vertex(2)->point()) == LEFT_TURN;
   };
-  for(const Face_handle f : bad) {
+  for(std::size_t k = 0; k < bad.size(); ++k) {
+    const Face_handle f = bad[k];
+#if defined(__GNUC__)
+    if(k + 8 < bad.size()) // the faces are far apart: fetch the neighbourhood of one ahead
+      for(int i = 0; i < 3; ++i) {
+        __builtin_prefetch(&*bad[k + 8]->vertex(i));
+        __builtin_prefetch(&*bad[k + 8]->neighbor(i));
+      }
+#endif
     if(is_ccw(f))
       continue; // made ccw by an earlier flip
     for(int i = 0; i < 3; ++i) {
@@ -309,8 +318,16 @@ public:
     removed_.reserve(6 * pending_.size());
     position_.reserve(6 * pending_.size() + given_open_.size());
     for(rounds_ = 1; rounds_ <= limits.max_rounds; ++rounds_) {
-      for(std::size_t k = 0; k < pending_.size(); ++k)
+      for(std::size_t k = 0; k < pending_.size(); ++k) {
+#if defined(__GNUC__)
+        // The stars are far apart: fetch a vertex 8 ahead, then its face 4 ahead.
+        if(k + 8 < pending_.size())
+          __builtin_prefetch(&*pending_[k + 8]);
+        if(k + 4 < pending_.size() && pending_[k + 4]->face() != Face_handle())
+          __builtin_prefetch(&*pending_[k + 4]->face());
+#endif
         carve_faces_around(pending_[k]);
+      }
       pending_.clear();
       if(removed_list_.size() > limits.max_removed_faces)
         return "the damage exceeds the budget of the local repair";
@@ -344,9 +361,26 @@ public:
   // closes the outer cycle with infinite faces. Every new face's edges go on `stack`.
   void commit(std::vector<Edge>& stack)
   {
-    stack.erase(std::remove_if(stack.begin(), stack.end(),
-                               [&](const Edge& e) { return removed_.contains(&*e.first); }),
-                stack.end());
+    // The stack is long (every failing edge): a bitmap of the carved faces' slots answers
+    // from the cache where the hash table would miss it.
+    using Bitmap = Slot_bitmap<typename Tds::Face>;
+    std::uint64_t low = ~std::uint64_t(0), high = 0;
+    for(const Face_handle f : removed_list_) {
+      low = (std::min)(low, Bitmap::value(&*f));
+      high = (std::max)(high, Bitmap::value(&*f));
+    }
+    if(stack.size() > 4096 && Bitmap::fits(low, high, removed_list_.size() + stack.size())) {
+      Bitmap carved(low, high);
+      for(const Face_handle f : removed_list_)
+        carved.insert(&*f);
+      stack.erase(std::remove_if(stack.begin(), stack.end(), [&](const Edge& e) { return carved.contains(&*e.first); }),
+                  stack.end());
+    } else {
+      stack.erase(std::remove_if(stack.begin(), stack.end(),
+                                 [&](const Edge& e) { return removed_.contains(&*e.first); }),
+                  stack.end());
+    }
+    created_set_.reserve(created_set_.size() + removed_list_.size());
     if(keep_undo_log_)
       record_undo_log();
     for(const Face_handle f : removed_list_)
@@ -576,6 +610,11 @@ private:
     const bool loops_may_change = !loops_.empty(); // none in the first round
     for(std::size_t k = first_new; k < traced_; ++k) {
       const Face_handle f = removed_list_[k];
+#if defined(__GNUC__)
+      if(k + 8 < traced_)
+        for(int i = 0; i < 3; ++i)
+          __builtin_prefetch(&*removed_list_[k + 8]->neighbor(i));
+#endif
       for(int i = 0; i < 3; ++i) {
         if(loops_may_change)
           changed.insert(&*f->vertex(i), 0);
@@ -1010,6 +1049,7 @@ private:
   void record_undo_log()
   {
     undo_.resize(removed_list_.size());
+    old_index_.reserve(removed_list_.size());
     for(std::size_t k = 0; k < removed_list_.size(); ++k) {
       const Face_handle f = removed_list_[k];
       old_index_.insert(&*f, k);

@@ -71,49 +71,81 @@ inline void sort_unique_addresses(std::vector<const void*>& addresses)
   addresses.erase(std::unique(addresses.begin(), addresses.end()), addresses.end());
 }
 
+// A set of addresses of objects of type `Object` whose storage no other shares (slots of one
+// CGAL container, used or freed since): a bitmap of the object-sized slots from `low` to
+// `high`. Distinct objects differ by at least sizeof(Object), so they never share a bit.
+template <class Object>
+class Slot_bitmap
+{
+public:
+  static std::uint64_t value(const void* p) { return std::uint64_t(reinterpret_cast<std::uintptr_t>(p)); }
+
+  // Whether a bitmap for `count` addresses between `low` and `high` takes at most 4 bytes an
+  // address (objects spread over memory, not in one container, would need far more).
+  static bool fits(std::uint64_t low, std::uint64_t high, std::size_t count)
+  {
+    return low <= high && (high - low) / sizeof(Object) + 1 <= 32 * std::uint64_t(count) + (std::uint64_t(1) << 16);
+  }
+
+  Slot_bitmap(std::uint64_t low, std::uint64_t high)
+      : low_(low), high_(high), bits_(std::size_t(((high - low) / sizeof(Object) + 1 + 63) / 64), 0)
+  {}
+
+  // Adds p, between low and high; returns whether it was absent.
+  bool insert(const void* p)
+  {
+    const std::uint64_t s = (value(p) - low_) / sizeof(Object);
+    std::uint64_t& word = bits_[std::size_t(s >> 6)];
+    const std::uint64_t bit = std::uint64_t(1) << (s & 63);
+    const bool fresh = (word & bit) == 0;
+    word |= bit;
+    return fresh;
+  }
+
+  bool contains(const void* p) const
+  {
+    const std::uint64_t v = value(p);
+    if(v < low_ || v > high_)
+      return false;
+    const std::uint64_t s = (v - low_) / sizeof(Object);
+    return ((bits_[std::size_t(s >> 6)] >> (s & 63)) & 1) != 0;
+  }
+
+private:
+  std::uint64_t low_, high_;
+  std::vector<std::uint64_t> bits_;
+};
+
 // The number of distinct addresses among `listed` and those of the objects behind
 // `handles[first..]` for which `keep(address)` holds (asked once per distinct address that is
-// not in `listed`). Every address is that of an object of type `Object` whose storage no
-// other shares (slots of one CGAL container, used or freed since): distinct ones differ by at
-// least sizeof(Object), so they never share a bit.
+// not in `listed`). Every address is that of an object of type `Object` as in Slot_bitmap.
 template <class Object, class Handle, class Keep>
 std::size_t count_distinct_addresses(const std::vector<const void*>& listed, const std::vector<Handle>& handles,
                                      std::size_t first, Keep keep)
 {
-  auto value = [](const void* p) { return std::uint64_t(reinterpret_cast<std::uintptr_t>(p)); };
+  using Bitmap = Slot_bitmap<Object>;
   first = (std::min)(first, handles.size());
   const std::size_t count = listed.size() + (handles.size() - first);
   if(count == 0)
     return 0;
   std::uint64_t low = ~std::uint64_t(0), high = 0;
   for(const void* p : listed) {
-    low = (std::min)(low, value(p));
-    high = (std::max)(high, value(p));
+    low = (std::min)(low, Bitmap::value(p));
+    high = (std::max)(high, Bitmap::value(p));
   }
   for(std::size_t k = first; k < handles.size(); ++k) {
-    const std::uint64_t p = value(&*handles[k]);
+    const std::uint64_t p = Bitmap::value(&*handles[k]);
     low = (std::min)(low, p);
     high = (std::max)(high, p);
   }
-  constexpr std::uint64_t slot = sizeof(Object);
-  const std::uint64_t slots = (high - low) / slot + 1;
-  if(slots <= 32 * std::uint64_t(count) + (std::uint64_t(1) << 16)) { // at most 4 bytes per address
-    std::vector<std::uint64_t> seen(std::size_t((slots + 63) / 64), 0);
-    // Sets the bit of p; returns whether it was clear.
-    auto mark = [&](const void* p) {
-      const std::uint64_t s = (value(p) - low) / slot;
-      std::uint64_t& word = seen[std::size_t(s >> 6)];
-      const std::uint64_t bit = std::uint64_t(1) << (s & 63);
-      const bool fresh = (word & bit) == 0;
-      word |= bit;
-      return fresh;
-    };
+  if(Bitmap::fits(low, high, count)) {
+    Bitmap seen(low, high);
     std::size_t distinct = 0;
     for(const void* p : listed)
-      distinct += mark(p) ? 1 : 0;
+      distinct += seen.insert(p) ? 1 : 0;
     for(std::size_t k = first; k < handles.size(); ++k) {
       const void* p = &*handles[k];
-      if(mark(p) && keep(p))
+      if(seen.insert(p) && keep(p))
         ++distinct;
     }
     return distinct;
@@ -128,7 +160,7 @@ std::size_t count_distinct_addresses(const std::vector<const void*>& listed, con
   std::size_t distinct = sorted.size();
   for(const void* p : more)
     if(!std::binary_search(sorted.begin(), sorted.end(), p,
-                           [&](const void* a, const void* b) { return value(a) < value(b); }) &&
+                           [](const void* x, const void* y) { return Bitmap::value(x) < Bitmap::value(y); }) &&
        keep(p))
       ++distinct;
   return distinct;
