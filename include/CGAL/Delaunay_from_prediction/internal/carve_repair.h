@@ -317,6 +317,7 @@ public:
     // A star has about 6 faces, each carved face opens about one half-edge.
     removed_.reserve(6 * pending_.size());
     position_.reserve(6 * pending_.size() + given_open_.size());
+    leaving_.reserve(6 * pending_.size() + given_open_.size());
     for(rounds_ = 1; rounds_ <= limits.max_rounds; ++rounds_) {
       for(std::size_t k = 0; k < pending_.size(); ++k) {
 #if defined(__GNUC__)
@@ -602,6 +603,9 @@ private:
     std::vector<std::size_t> to_trace;
     auto open = [&](Face_handle g, int j) {
       to_trace.push_back(open_.size());
+      Leaving* leaving = leaving_.insert(&*g->vertex(ccw(j)), Leaving()).first;
+      leaving->last = open_.size();
+      ++leaving->alive;
       position_.insert(halfedge_key(Edge(g, j)), open_.size());
       open_.emplace_back(g, j);
       alive_.push_back(1);
@@ -618,8 +622,11 @@ private:
       for(int i = 0; i < 3; ++i) {
         if(loops_may_change)
           changed.insert(&*f->vertex(i), 0);
-        if(const std::size_t* at = position_.find(halfedge_key(Edge(f, i))))
+        if(const std::size_t* at = position_.find(halfedge_key(Edge(f, i)))) {
+          if(alive_[*at])
+            --leaving_.insert(&*f->vertex(ccw(i)), Leaving()).first->alive; // registered: found
           alive_[*at] = 0;
+        }
         const Face_handle g = f->neighbor(i);
         if(g != Face_handle() && !removed_.contains(&*g))
           open(g, g->index(f));
@@ -666,7 +673,7 @@ private:
     std::vector<std::size_t> successor(open_.size(), unknown);
     for(const std::size_t k : to_trace)
       if(alive_[k] && loop_of_[k] == none)
-        successor[k] = next_open(k);
+        successor[k] = next_open_by_vertex(k);
     auto next = [&](std::size_t k) { return successor[k] != unknown ? successor[k] : next_open(k); };
     for(const std::size_t k : to_trace) {
       if(!alive_[k] || loop_of_[k] != none)
@@ -890,6 +897,17 @@ private:
     return none;
   }
 
+  // next_open(), from the open half-edges leaving the head: when it has only one, that one
+  // (the turn around the head from open_[k] through kept faces stays in one fan, which ends
+  // at an open half-edge leaving the head); otherwise by the turn.
+  std::size_t next_open_by_vertex(std::size_t k) const
+  {
+    const Leaving* leaving = leaving_.find(&*open_[k].first->vertex(cw(open_[k].second)));
+    if(leaving != nullptr && leaving->alive == 1 && alive_[leaving->last])
+      return leaving->last;
+    return next_open(k);
+  }
+
   Vertex_handle tail_vertex(std::size_t k) const { return open_[k].first->vertex(ccw(open_[k].second)); }
 
   // Splits a cycle at every vertex it passes twice into loops that pass each vertex once, in
@@ -1077,6 +1095,12 @@ private:
   std::vector<char> alive_;               // whether it still is (its face not carved since)
   std::vector<std::size_t> loop_of_;      // its loop, or none
   Address_table<std::size_t> position_;   // open half-edge -> its position in open_
+  struct Leaving
+  {
+    std::size_t last = 0;  // the open half-edge registered last with this tail
+    std::size_t alive = 0; // how many with this tail are alive
+  };
+  Address_table<Leaving> leaving_;        // tail vertex -> its open half-edges
   std::vector<Loop> loops_;               // the current ones are not dead
 
   std::vector<Face_handle> created_;
