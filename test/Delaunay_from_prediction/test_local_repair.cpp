@@ -933,6 +933,47 @@ void euler_early_exit()
   }
 }
 
+// Statistics::faces_certified counts the distinct faces a repair touched with a bitmap of face
+// slots (sort_addresses.h), or by sorting when the addresses are too spread out for one. Both
+// paths against a count by std::set, with repeats, a `listed` part and a `keep` filter; the
+// spread case takes objects from a large heap block and from a static array, so its test
+// checks that the bitmap was indeed ruled out.
+void distinct_face_count()
+{
+  struct Object { std::uint64_t words[7]; }; // the size of a CGAL face
+  static Object far_away[64];
+  std::vector<Object> block(200000);        // 11 MB: its own mapping, far from far_away
+  Random random{7001};
+  for(const bool spread : {false, true}) {
+    std::vector<const Object*> handles;
+    std::vector<const void*> listed;
+    for(int k = 0; k < 30000; ++k) {
+      const Object* o = spread && k % 3 == 0 ? &far_away[random() % 64] : &block[random() % 5000];
+      (k % 5 == 0 ? listed.push_back(o) : handles.push_back(o));
+    }
+    const std::size_t first = 1000;
+    auto keep = [&](const void* p) { return (reinterpret_cast<std::uintptr_t>(p) / sizeof(Object)) % 3 != 0; };
+    std::set<const void*> expected(listed.begin(), listed.end());
+    for(std::size_t k = first; k < handles.size(); ++k)
+      if(keep(handles[k]))
+        expected.insert(handles[k]);
+    std::uint64_t low = ~std::uint64_t(0), high = 0;
+    for(const void* p : listed) {
+      low = (std::min)(low, std::uint64_t(reinterpret_cast<std::uintptr_t>(p)));
+      high = (std::max)(high, std::uint64_t(reinterpret_cast<std::uintptr_t>(p)));
+    }
+    for(std::size_t k = first; k < handles.size(); ++k) {
+      low = (std::min)(low, std::uint64_t(reinterpret_cast<std::uintptr_t>(handles[k])));
+      high = (std::max)(high, std::uint64_t(reinterpret_cast<std::uintptr_t>(handles[k])));
+    }
+    const bool bitmap = DFP::internal::Slot_bitmap<Object>::fits(low, high, listed.size() + handles.size() - first);
+    DFP_CHECK_MSG(bitmap == !spread, (spread ? "spread" : "one block") << ": bitmap " << bitmap);
+    const std::size_t counted = DFP::internal::count_distinct_addresses<Object>(listed, handles, first, keep);
+    DFP_CHECK_MSG(counted == expected.size(), (spread ? "spread" : "one block") << ": " << counted << " counted, "
+                                                                                 << expected.size() << " expected");
+  }
+}
+
 // Strategy::t_division with tiny regions (4 to 64 faces) on many small random inputs, so that
 // most regions touch bad ones and the fills meet each other, the hull and the grid's
 // co-circular ties: make_delaunay after random moves (vertex handles and info kept), and
@@ -1037,6 +1078,7 @@ int main()
     isolated("t_division, tiny regions, small random inputs", [] { t_division_small_random_cases(); });
     isolated("carve, the same input in 24 memory layouts", [&] { carve_independent_of_memory_layout(uniform_5000); });
     isolated("early exit of the import by Euler's formula", [] { euler_early_exit(); });
+    isolated("distinct face count of the statistics", [] { distinct_face_count(); });
   }
   {
     Scope scope("Simple_cartesian<double> (inexact): terminates with a valid triangulation");

@@ -1008,9 +1008,8 @@ private:
   }
 
   // The vertices left without a kept face: those whose star was carved, and those all of
-  // whose faces went with their neighbours' stars. Each is reinserted.
-  // Each gets a vertex of a face carved with it that keeps faces, if any, to start the
-  // location of its point from.
+  // whose faces went with their neighbours' stars. Each is reinserted, located from a vertex
+  // on a cycle that shared a carved face with it, if there is one (near_).
   void collect_isolated_vertices()
   {
     Address_table<char> listed; // 1: on a cycle, 0: detached

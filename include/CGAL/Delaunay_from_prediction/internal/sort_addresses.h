@@ -9,6 +9,7 @@
 // and stays in cache, where sorting took 22 ms (radix) to 60 ms (std::sort). Addresses spread
 // too far apart for a bitmap (objects not in one container) are sorted instead: a
 // least-significant-digit radix sort on the offsets from the lowest address.
+
 #ifndef CGAL_DELAUNAY_FROM_PREDICTION_INTERNAL_SORT_ADDRESSES_H
 #define CGAL_DELAUNAY_FROM_PREDICTION_INTERNAL_SORT_ADDRESSES_H
 
