@@ -89,10 +89,8 @@ bool flip_edges_while(Triangulation& tr,
     const auto& b = f->vertex(ccw(i))->point();
     const auto& c = f->vertex(cw(i))->point();
     const auto& d = g->vertex(j)->point();
-#if defined(__GNUC__)
-    __builtin_prefetch(&*f->neighbor(ccw(i)));
-    __builtin_prefetch(&*g->neighbor(ccw(j)));
-#endif
+    prefetch_across(std::make_pair(f, ccw(i)));
+    prefetch_across(std::make_pair(g, ccw(j)));
     if(!wants_flip(f, i, a, b, c, d))
       continue;
     if(!Wanted_flips_are_convex && !flip_makes_ccw_faces(gt, a, b, c, d))
