@@ -409,6 +409,12 @@ Statistics delaunay_from_prediction(const PointRange& points, const FaceRange& f
   stats.edges_tested = imported.edges_tested;
   stats.edges_not_locally_delaunay = imported.not_locally_delaunay.size();
   stats.faces_carved = imported.faces_dropped;
+  // Small holes the import filled itself count as the first round of the local repair.
+  stats.holes_refilled = imported.holes_filled;
+  stats.carve_rounds = imported.holes_filled > 0 ? 1 : 0;
+  auto filled_by_import = [&](const void* f) {
+    return std::binary_search(imported.filled_faces.begin(), imported.filled_faces.end(), f);
+  };
 
   // Repair. Each failing edge is not Delaunay and a flip removes one edge, so Lawson's
   // algorithm needs at least as many flips as there are failing edges: past the budget, the
@@ -419,7 +425,8 @@ Statistics delaunay_from_prediction(const PointRange& points, const FaceRange& f
   std::vector<const void*> modified; // predicted faces changed by the repair
   std::unique_ptr<internal::Carve_repair<DT>> repair;
   // Tracing and filling holes costs about 2 us per boundary half-edge at 1e6 points (measured:
-  // 1% of a DT's faces deleted, 60,000 such half-edges, 0.12 s), a rebuild about 0.75 us per
+  // 1% of a DT's faces deleted, 60,000 such half-edges, 0.12 s, before the import filled the
+  // small holes itself; these are the half-edges it left), a rebuild about 0.75 us per
   // point: past n/4 of them the repair would cost more than the rebuild it avoids.
   if(imported.needs_repair && imported.open_halfedges.size() > n / 4 + 64)
     return build_from_scratch("too many holes for a local repair");
@@ -435,7 +442,7 @@ Statistics delaunay_from_prediction(const PointRange& points, const FaceRange& f
     for(const auto& e : imported.open_halfedges)
       repair->add_open_halfedge(e.first, e.second);
     const char* why = repair->plan(internal::default_carve_limits(n));
-    stats.carve_rounds = repair->rounds();
+    stats.carve_rounds = (std::max)(stats.carve_rounds, repair->rounds());
     if(why != nullptr)
       return build_from_scratch(why);
 #ifdef DFP_DEBUG
@@ -453,8 +460,13 @@ Statistics delaunay_from_prediction(const PointRange& points, const FaceRange& f
       result.tds().delete_vertex(v);
       ++duplicates;
     });
-    stats.faces_carved += repair->faces_removed();
-    stats.holes_refilled = repair->holes();
+    // Faces the import filled holes with are not predicted faces, carved or modified.
+    modified.erase(std::remove_if(modified.begin(), modified.end(), filled_by_import), modified.end());
+    std::size_t filled_removed = 0;
+    for(const void* f : imported.filled_faces)
+      filled_removed += repair->is_removed(f) ? 1 : 0;
+    stats.faces_carved += repair->faces_removed() - filled_removed;
+    stats.holes_refilled += repair->holes();
     stats.points_reinserted = repair->detached().size();
     stats.duplicate_points += duplicates;
   }
@@ -475,7 +487,7 @@ Statistics delaunay_from_prediction(const PointRange& points, const FaceRange& f
     stats.duplicate_points += duplicates;
   }
   auto made_by_repair = [&](const void* f) {
-    return (repair && repair->is_created(f)) || (regions && regions->is_created(f));
+    return (repair && repair->is_created(f)) || (regions && regions->is_created(f)) || filled_by_import(f);
   };
   std::vector<Face_handle> touched;
   // Points reinserted by the t-division make a few flips each, on top of the budget.
@@ -486,7 +498,7 @@ Statistics delaunay_from_prediction(const PointRange& points, const FaceRange& f
   // Points no face uses: duplicates of vertices, or points to insert.
   std::vector<std::size_t>& unused = imported.unused_points;
   stats.points_unused = unused.size();
-  if(unused.empty() && !repair && !regions) {
+  if(unused.empty() && !repair && !regions && imported.filled_faces.empty()) {
     stats.faces_certified = result.number_of_faces() - internal::count_distinct(touched);
   } else if(unused.empty() && !regions) {
     // The predicted faces kept, less those the repair modified (flipped, or split by a

@@ -933,6 +933,110 @@ void euler_early_exit()
   }
 }
 
+// The tolerant import fills small holes itself (import_prediction.h, fill_small_holes): holes
+// that are single faces of a DT, with the hull intact, are all filled there (the importer's own
+// output says so, and the hull is then closed without carve_repair.h), with the predicted faces
+// certified and no flip; a vertex's star deleted leaves a hole around an unused point, filled
+// and then the point inserted; two adjacent faces deleted leave a quadrilateral, whose diagonal
+// the ear clipping may get wrong (a flip); a face on the hull deleted leaves the outer cycle to
+// carve_repair.h, with the faces the import made not counted as predicted faces carved.
+void import_fills_small_holes()
+{
+  using DT = DT_with_info<Epick>;
+  const auto points = to_points<Epick>(uniform_xy(5000, 8001));
+  const Faces faces = DFP::delaunay_triangles(points);
+  DT reference;
+  reference.insert(points.begin(), points.end());
+  std::vector<char> on_hull(points.size(), 0);
+  {
+    std::map<std::pair<double, double>, std::size_t> index;
+    for(std::size_t i = 0; i < points.size(); ++i)
+      index[{points[i].x(), points[i].y()}] = i;
+    for(auto v = reference.incident_vertices(reference.infinite_vertex()); ; ) {
+      on_hull[index[{v->point().x(), v->point().y()}]] = 1;
+      if(++v == reference.incident_vertices(reference.infinite_vertex()))
+        break;
+    }
+  }
+  auto touches_hull = [&](const Face& f) { return on_hull[f[0]] || on_hull[f[1]] || on_hull[f[2]]; };
+  {
+    Scope scope("interior faces with no common vertex deleted");
+    std::vector<char> taken(points.size(), 0);
+    Faces kept;
+    std::size_t deleted = 0;
+    for(std::size_t k = 0; k < faces.size(); ++k) {
+      const Face& f = faces[k];
+      if(k % 29 == 0 && !touches_hull(f) && !taken[f[0]] && !taken[f[1]] && !taken[f[2]]) {
+        taken[f[0]] = taken[f[1]] = taken[f[2]] = 1;
+        ++deleted;
+      } else {
+        kept.push_back(f);
+      }
+    }
+    DFP_CHECK(deleted > 100);
+    DT imported;
+    DFP::internal::Imported_prediction<DT> out;
+    DFP::internal::Prediction_importer<DT>::run(imported, points.begin(), points.size(), kept, kept.size(), out, true);
+    DFP_CHECK_MSG(out.failure == nullptr && !out.needs_repair && out.holes_filled == deleted &&
+                      out.filled_faces.size() == deleted && out.not_locally_delaunay.empty(),
+                  (out.failure ? out.failure : "") << " needs_repair " << out.needs_repair << ", " << out.holes_filled
+                                                   << " holes filled, " << deleted << " deleted");
+    DFP_CHECK(imported.is_valid());
+    DT dt;
+    const DFP::Statistics s = DFP::delaunay_from_prediction(points, kept, dt);
+    DFP_CHECK_MSG(!s.fell_back && s.holes_refilled == deleted && s.carve_rounds == 1 && s.flips == 0 &&
+                      s.faces_carved == 0 && s.faces_certified == kept.size(),
+                  describe(s) << "; " << deleted << " deleted");
+    check_is_cgal_delaunay(dt, points);
+    check_dfp_statistics(s, kept, points, dt);
+  }
+  // The faces around vertex `center`, or the two faces on an interior edge (a quadrilateral).
+  auto without = [&](auto drop) {
+    Faces kept;
+    for(const Face& f : faces)
+      if(!drop(f))
+        kept.push_back(f);
+    return kept;
+  };
+  std::size_t center = 0;
+  while(on_hull[center])
+    ++center;
+  const Face first = [&] {
+    for(const Face& f : faces)
+      if(!touches_hull(f))
+        return f;
+    return faces[0];
+  }();
+  auto has = [](const Face& f, std::size_t v) { return f[0] == v || f[1] == v || f[2] == v; };
+  for(int c = 0; c < 4; ++c) {
+    const char* what[] = {"the star of a vertex deleted (its point unused)", "two adjacent faces deleted",
+                          "two adjacent faces deleted, other edge", "a face on the hull and interior faces deleted"};
+    Scope scope(what[c]);
+    Faces kept;
+    if(c == 0) {
+      kept = without([&](const Face& f) { return has(f, center); });
+    } else if(c < 3) {
+      // `first` and its neighbour across the edge opposite its vertex c.
+      const std::size_t a = first[c % 3], b = first[(c + 1) % 3];
+      kept = without([&](const Face& f) { return has(f, a) && has(f, b); });
+    } else {
+      std::size_t hull_face = 0;
+      while(!touches_hull(faces[hull_face]))
+        ++hull_face;
+      kept = without([&](const Face& f) { return &f == &faces[hull_face] || (&f - &faces[0]) % 97 == 5; });
+    }
+    DT dt;
+    const DFP::Statistics s = DFP::delaunay_from_prediction(points, kept, dt);
+    DFP_CHECK_MSG(!s.fell_back && s.holes_refilled >= 1 && s.carve_rounds >= 1, describe(s));
+    if(c == 0)
+      DFP_CHECK_MSG(s.points_unused == 1 && s.points_reinserted == 1 && s.faces_carved == 0, describe(s));
+    if(c == 1 || c == 2)
+      DFP_CHECK_MSG(s.faces_in == faces.size() - 2 && s.flips <= 1 && s.faces_carved == 0, describe(s));
+    check_is_cgal_delaunay(dt, points);
+    check_dfp_statistics(s, kept, points, dt);
+  }
+}
+
 // Statistics::faces_certified counts the distinct faces a repair touched with a bitmap of face
 // slots (sort_addresses.h), or by sorting when the addresses are too spread out for one. Both
 // paths against a count by std::set, with repeats, a `listed` part and a `keep` filter; the
@@ -1079,6 +1183,7 @@ int main()
     isolated("carve, the same input in 24 memory layouts", [&] { carve_independent_of_memory_layout(uniform_5000); });
     isolated("early exit of the import by Euler's formula", [] { euler_early_exit(); });
     isolated("distinct face count of the statistics", [] { distinct_face_count(); });
+    isolated("small holes filled by the import", [] { import_fills_small_holes(); });
   }
   {
     Scope scope("Simple_cartesian<double> (inexact): terminates with a valid triangulation");

@@ -63,8 +63,11 @@ int main()
   {
     const Edges all = delaunay_edges(uniform);
     const DFP::Statistics s = run(uniform, all);
-    DFP_CHECK_MSG(!s.fell_back && s.flips == 0 && s.faces_carved <= s.faces_in / 20,
-                  "the whole DT: " << s.fallback_reason << " carved " << s.faces_carved);
+    // The separating triangles around vertices of degree 3 overlap the faces there: what the
+    // importer leaves out is carved and refilled by ear clipping, whose diagonals depend on
+    // where a hole's tracing starts, so a few flips may follow (one per carved face at most).
+    DFP_CHECK_MSG(!s.fell_back && s.flips <= s.faces_carved && s.faces_carved <= s.faces_in / 20,
+                  "the whole DT: " << s.fallback_reason << " carved " << s.faces_carved << ", flips " << s.flips);
     // Each missing edge opens a hole of 4 half-edges: past about n/4 of those (here about 2%
     // of the edges missing) the call rebuilds by design; exact either way.
     for(double missing : {0.01, 0.1, 0.3}) {

@@ -71,7 +71,8 @@ struct Statistics
   std::size_t holes_refilled = 0;
   /// number of rounds of the local repair: each round traces the holes and widens those that
   /// cannot be retriangulated as they are (0 when the local repair did not run; it may run
-  /// without carving anything, only to fill holes).
+  /// without carving anything, only to fill holes). In `delaunay_from_prediction()`, the
+  /// small holes the import fills itself count as the first round.
   std::size_t carve_rounds = 0;
   /// `Strategy::t_division`: number of regions the faces were divided into (0 otherwise).
   std::size_t regions = 0;

@@ -355,6 +355,7 @@ public:
   }
   const std::vector<Vertex_handle>& detached() const { return detached_; }
   bool is_removed(Face_handle f) const { return removed_.contains(&*f); }
+  bool is_removed(const void* f) const { return removed_.contains(f); }
 
   // --- Modifying. ------------------------------------------------------------------------
 
