@@ -2,13 +2,18 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Author(s): Delaunay_from_prediction contributors
 //
-// Strategy::t_division (Theorem 2.1, internal/region_repair.h) with its default budget: on
+// Strategy::t_division (Theorem 2.1, internal/region_repair.h) with 8 times its default budget
+// (the default hands a damage of m marks in regions of t faces to the carve past m t = 0.15 n,
+// where the division would cost more than a rebuild; at 20,000 points that is 4 marks with the
+// default t = 625, 1 mark with t = 4096): on
 // inputs of 20,000 points with local damage it must take its own path (no fallback, at least
 // one bad region, few of them, the fill made of faces of DT(V_B), the vertices of the bad
 // regions reinserted) and give exactly CGAL's triangulation, with vertex handles and info()
 // kept in make_delaunay; the region size parameter must shape the division; heavy damage must
 // make it give up before dividing and hand over to the carve. test_local_repair.cpp runs it, without budget, on every
 // damaged and degenerate input of the local repair, and on many small random cases.
+
+#define CGAL_DELAUNAY_FROM_PREDICTION_T_DIVISION_BUDGET(n) (8 * (n))
 
 #include <CGAL/Delaunay_from_prediction_2.h> // first: the header is self-contained
 
