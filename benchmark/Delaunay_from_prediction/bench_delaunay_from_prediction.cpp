@@ -771,8 +771,8 @@ void run(const Options& o, const std::string& dist, std::size_t n, Report& repor
     const double nn = mean_nearest_neighbour_distance(indexed);
     const DT base(points.begin(), points.end());
     const std::uint64_t salt = seed_for(o.seed, "move/" + dist, n);
-    // 0.0001 shows the in-place path: at 1e5 points and more, 0.001 already turns over a few
-    // of the skinniest faces, and the call rebuilds (local repair is a later issue).
+    // 0.0001 turns no face over; at 1e5 points and more, 0.001 already turns over a few of the
+    // skinniest faces, which the local repair (carve_repair.h) takes care of.
     for(double sigma : {0.0001, 0.001, 0.01, 0.1, 0.5}) {
       const double step = sigma * nn;
       std::vector<Point> moved_points(points.size());

@@ -9,7 +9,8 @@
 // info = point index), every vertex then moved with set_point() by Gaussian noise of standard
 // deviation sigma times the mean spacing 1/sqrt(n), so that some faces are inverted. The
 // program repeats what make_delaunay() does before it changes anything for good: the
-// certificate collecting the faces that are not counterclockwise, untangle_by_flips(), and a
+// certificate collecting the faces that are not counterclockwise (with Lawson's flips between
+// counterclockwise faces on its way, drawn as kept faces), untangle_by_flips(), and a
 // Carve_repair with the star of the vertex opposite the longest edge of each face still bad
 // carved (the choice of internal::carve_in_place) and plan(default_carve_limits(n)). It does
 // not commit: it reads is_removed() of every face and detached(), and draws
@@ -211,11 +212,15 @@ int main(int argc, char** argv)
   // 2. What make_delaunay() does before the repair commits (make_delaunay, carve_in_place).
   std::vector<std::pair<Face_handle, int>> stack;
   std::vector<Face_handle> bad;
-  std::size_t edges_tested = 0;
+  std::size_t edges_tested = 0, flips = 0;
   bool hull_is_convex = false;
   const DFP::internal::Carve_limits limits = DFP::internal::default_carve_limits(tr.number_of_vertices());
-  const char* why =
-      DFP::internal::certify_triangulation(tr, stack, edges_tested, hull_is_convex, &bad, limits.max_bad_faces);
+  DFP::internal::Flip_log<DT> untangled; // every flip before the carve, as in make_delaunay()
+  std::vector<Face_handle> touched;
+  DFP::internal::Inline_flips<DT> inline_flips{DFP::internal::default_max_flips(tr.number_of_vertices()), flips,
+                                               touched, untangled};
+  const char* why = DFP::internal::certify_triangulation(tr, stack, edges_tested, hull_is_convex, &bad,
+                                                         limits.max_bad_faces, &inline_flips);
   if(why != nullptr) {
     std::size_t not_ccw = 0;
     for(auto f = tr.finite_faces_begin(); f != tr.finite_faces_end(); ++f)
@@ -235,8 +240,7 @@ int main(int argc, char** argv)
       near = near || hull.count(f->vertex(i)->info()) > 0;
     inverted_near_hull += near ? 1 : 0;
   }
-  std::vector<std::pair<Vertex_handle, Vertex_handle>> untangled;
-  std::vector<Face_handle> touched;
+  const std::size_t flipped_in_certification = untangled.size();
   DFP::internal::untangle_by_flips(tr, bad, stack, untangled, touched);
 
   DFP::internal::Carve_repair<DT> carve(tr, true);
@@ -260,9 +264,9 @@ int main(int argc, char** argv)
   if(bad.empty())
     std::fprintf(stderr, "warning: the untangling flips repaired every face: nothing is carved\n");
 
-  std::set<const void*> flipped;
-  for(const Face_handle f : touched)
-    flipped.insert(&*f);
+  std::set<const void*> flipped; // by the untangling (each flip touched two faces)
+  for(std::size_t k = 2 * flipped_in_certification; k < touched.size(); ++k)
+    flipped.insert(&*touched[k]);
   std::set<std::size_t> detached;
   for(const Vertex_handle v : carve.detached())
     detached.insert(v->info());
@@ -370,7 +374,9 @@ int main(int argc, char** argv)
   std::ostringstream summary;
   summary << n << " points moved by sigma = " << o.sigma << " x spacing (seed " << o.seed << "): "
           << inverted.size() << " faces inverted (" << inverted_near_hull << " near the hull), "
-          << untangled.size() << " untangling flips (" << count_flipped << " flipped faces kept), "
+          << flipped_in_certification << " Lawson flips during certification, "
+          << untangled.size() - flipped_in_certification << " untangling flips (" << count_flipped
+          << " flipped faces kept), "
           << bad.size() << " faces still inverted, " << (carved_any ? carve.faces_removed() : 0)
           << " faces carved in " << (carved_any ? carve.rounds() : 0) << " round(s), "
           << (carved_any ? carve.holes() : 0) << " hole(s)" << (carved_infinite > 0 ? " and the outer boundary" : "")

@@ -57,9 +57,6 @@ namespace internal {
 // plain Triangulation_2 of random points ~6n, which is cheaper to rebuild.
 inline std::size_t default_max_flips(std::size_t n) { return 3 * n / 4 + 64; }
 
-// Statistics::fallback_reason when Lawson's algorithm would need, or needed, more flips than
-// the budget.
-constexpr const char* flip_budget_exhausted = "the flip budget was exhausted";
 // Statistics::fallback_reason for Strategy::rebuild.
 constexpr const char* rebuild_requested = "the rebuild strategy was chosen";
 
@@ -172,7 +169,7 @@ template <class Triangulation>
 const char* carve_in_place(Triangulation& tr, const std::vector<typename Triangulation::Face_handle>& bad,
                            std::vector<std::pair<typename Triangulation::Face_handle, int>>& stack,
                            std::vector<typename Triangulation::Face_handle>& touched,
-                           std::size_t max_flips, Statistics& stats)
+                           Flip_log<Triangulation>& flip_log, std::size_t max_flips, Statistics& stats)
 {
   using Face_handle = typename Triangulation::Face_handle;
   Carve_repair<Triangulation> carve(tr, true);
@@ -203,7 +200,7 @@ const char* carve_in_place(Triangulation& tr, const std::vector<typename Triangu
     return "two vertices are at the same point";
   carve.commit(stack);
   if(!carve.finish_hull(stack, stats.flips)) {
-    carve.rollback();
+    carve.rollback(flip_log); // the flips before the carve can still be undone
     return "the kept faces and the filled holes do not form a triangulation";
   }
   std::vector<const void*> modified;
@@ -213,16 +210,14 @@ const char* carve_in_place(Triangulation& tr, const std::vector<typename Triangu
   stats.faces_carved = carve.faces_removed();
   stats.holes_refilled = carve.holes();
   stats.points_reinserted = carve.detached().size();
-  const std::size_t untangled = touched.size(); // faces flipped before the carve
   if(!lawson_flip(tr, stack, max_flips, stats.flips, touched))
     return flip_budget_exhausted;
-  for(std::size_t k = 0; k < untangled; ++k)
-    if(!carve.is_removed(touched[k]))
-      modified.push_back(&*touched[k]);
+  // The predicted faces modified: those flipped (before the carve or after it) that were
+  // neither carved nor made by the repair, and those insertion split.
   stats.faces_certified =
       stats.faces_in - stats.faces_carved -
-      count_distinct_addresses<typename Triangulation::Face>(modified, touched, untangled,
-                                                             [&](const void* f) { return !carve.is_created(f); });
+      count_distinct_addresses<typename Triangulation::Face>(
+          modified, touched, 0, [&](const void* f) { return !carve.is_removed(f) && !carve.is_created(f); });
   return nullptr;
 }
 
@@ -599,20 +594,25 @@ Statistics make_delaunay(Triangulation& tr, const NamedParameters& np = paramete
   std::vector<Face_handle> bad;
   bool hull_is_convex = false;
   const std::size_t max_bad = internal::default_carve_limits(tr.number_of_vertices()).max_bad_faces;
+  // Every flip until the triangulation is certified again (inline, untangling) is logged: if
+  // the rebuild below finds two vertices at the same point, they are undone before it
+  // throws, so that `tr` is left as it was (a carve rolled back updates the log).
+  internal::Flip_log<Triangulation> untangled;
+  std::vector<Face_handle> touched;
+  // Lawson's flips start during certification, except for the t-division, which plans its
+  // regions from the edges that fail in the prediction as given.
+  internal::Inline_flips<Triangulation> inline_flips{max_flips, stats.flips, touched, untangled};
   const char* why = strategy == Strategy::rebuild
                         ? internal::rebuild_requested
                         : internal::certify_triangulation(tr, stack, stats.edges_tested, hull_is_convex,
-                                                          carve || divide ? &bad : nullptr, max_bad);
+                                                          carve || divide ? &bad : nullptr, max_bad,
+                                                          divide ? nullptr : &inline_flips);
   if(why == nullptr)
-    stats.edges_not_locally_delaunay = stack.size();
+    stats.edges_not_locally_delaunay = divide ? stack.size() : inline_flips.edges_failing;
   // Lawson needs at least a flip per failing edge: past the budget, the flips are wasted.
   if(why == nullptr && stats.edges_not_locally_delaunay > max_flips)
     why = internal::flip_budget_exhausted;
   // Faces that are not ccw: first untangled by flips, then the rest carved (carve_repair.h).
-  // Until the triangulation is certified again, a failure undoes the flips, so that a
-  // rebuild that finds two vertices at the same point leaves `tr` as it was.
-  std::vector<std::pair<Vertex_handle, Vertex_handle>> untangled;
-  std::vector<Face_handle> touched;
   if(why == nullptr && divide) {
     // Theorem 2.1 (region_repair.h). If it does not pay or cannot be planned, `tr` is
     // untouched and the carve takes over; if the flip budget runs out, `tr` is a valid
@@ -639,12 +639,15 @@ Statistics make_delaunay(Triangulation& tr, const NamedParameters& np = paramete
     }
   }
   if(why == nullptr && !bad.empty()) {
+    const std::size_t inline_flipped = untangled.size();
     internal::untangle_by_flips(tr, bad, stack, untangled, touched);
-    stats.flips += untangled.size();
+    stats.flips += untangled.size() - inline_flipped;
     if(!bad.empty()) {
-      why = internal::carve_in_place(tr, bad, stack, touched, max_flips, stats);
+      why = internal::carve_in_place(tr, bad, stack, touched, untangled, max_flips, stats);
       if(why == nullptr)
         return stats;
+      if(why == internal::flip_budget_exhausted)
+        untangled.clear(); // the carve was committed: a triangulation again, nothing to undo
     }
   }
   std::vector<const void*> hull_faces; // finite faces made by convexify_hull
@@ -659,13 +662,16 @@ Statistics make_delaunay(Triangulation& tr, const NamedParameters& np = paramete
     why = internal::flip_budget_exhausted;
     untangled.clear(); // a triangulation again: no duplicates, nothing to undo
   }
-  if(!untangled.empty() && why != internal::flip_budget_exhausted)
-    internal::undo_untangling(tr, untangled);
   stats.fell_back = true;
   stats.fallback_reason = why;
   stats.faces_certified = 0;
   stats.points_reinserted = 0;
-  internal::rebuild_keeping_vertices(tr, stats);
+  try {
+    internal::rebuild_keeping_vertices(tr, stats); // leaves `tr` as it is when it throws
+  } catch(const Invalid_prediction&) {
+    internal::undo_flips(tr, untangled);
+    throw;
+  }
   return stats;
 }
 

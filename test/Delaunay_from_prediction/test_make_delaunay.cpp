@@ -508,6 +508,56 @@ void test_colored(const char* name, CGAL::Random& rng)
   check_colors();
 }
 
+// The flips make_delaunay makes before its carve (during certification, and untangling) are
+// logged, so that a call that ends by reporting two vertices at the same point can undo them.
+// When the carve is rolled back, the faces it removed come back as new objects: the log must
+// follow them. The carve is committed and rolled back by hand here (the public calls roll back
+// only when the filled holes fail the final check, which moved points do not reach), then the
+// log is undone: the triangulation must be exactly as it was, face for face.
+void test_flip_log_survives_rollback(CGAL::Random& rng)
+{
+  using Tr = DT_with_info<K>;
+  namespace I = DFP::internal;
+  std::size_t logged_on_carved_faces = 0;
+  for(int round = 0; round < 12; ++round) {
+    Scope scope("round " + std::to_string(round));
+    Tr tr;
+    const Points points = to_points<K>(uniform_points(500 + 200 * round, rng));
+    tr.insert(points.begin(), points.end());
+    const double spacing = 1. / std::sqrt(double(points.size()));
+    for(auto v = tr.finite_vertices_begin(); v != tr.finite_vertices_end(); ++v)
+      v->set_point(Point(v->point().x() + 0.1 * spacing * rng.get_double(-1, 1),
+                         v->point().y() + 0.1 * spacing * rng.get_double(-1, 1)));
+    const Snapshot<Tr> before(tr);
+    std::vector<std::pair<Tr::Face_handle, int>> stack;
+    std::vector<Tr::Face_handle> bad, touched;
+    I::Flip_log<Tr> log;
+    std::size_t flips = 0, tested = 0;
+    bool hull_is_convex = false;
+    I::Inline_flips<Tr> inline_flips{tr.number_of_vertices(), flips, touched, log};
+    DFP_CHECK(I::certify_triangulation(tr, stack, tested, hull_is_convex, &bad, tr.number_of_faces(),
+                                       &inline_flips) == nullptr);
+    DFP_CHECK(flips > 0 && log.size() == flips);
+    I::untangle_by_flips(tr, bad, stack, log, touched);
+    DFP_CHECK(!bad.empty());
+    I::Carve_repair<Tr> carve(tr, true);
+    for(const Tr::Face_handle f : bad)
+      carve.carve_star(f->vertex(round % 3));
+    const char* why = carve.plan(I::default_carve_limits(tr.number_of_vertices()));
+    DFP_CHECK_MSG(why == nullptr, why);
+    if(why != nullptr)
+      continue;
+    carve.commit(stack);
+    for(const auto& flip : log)
+      logged_on_carved_faces += carve.is_removed(&*flip.first) ? 1 : 0;
+    carve.rollback(log);
+    I::undo_flips(tr, log);
+    DFP_CHECK(tr.tds().is_valid()); // the moved points are not Delaunay: the TDS only
+    check_unchanged(tr, before);
+  }
+  DFP_CHECK(logged_on_carved_faces > 0); // the case the remapping is for did occur
+}
+
 template <class Tr>
 void test_type(const char* name, CGAL::Random& rng)
 {
@@ -524,6 +574,7 @@ int main()
   test_type<DT_with_info<K>>("Delaunay_triangulation_2 with size_t info", rng);
   test_type<T2_plain<K>>("Triangulation_2 without info", rng);
   test_type<T2_with_info<K, int>>("Triangulation_2 with int info", rng);
+  DFP_RUN(test_flip_log_survives_rollback(rng));
   DFP_RUN(test_colored<DT_colored<K>>("Delaunay_triangulation_2 with a user's vertex base", rng));
   DFP_RUN(test_colored<T2_colored<K>>("Triangulation_2 with a user's vertex base", rng));
   {

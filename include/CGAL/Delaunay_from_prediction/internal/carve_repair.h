@@ -47,6 +47,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
+#include <memory>
 #include <type_traits>
 #include <utility>
 #include <vector>
@@ -62,12 +63,11 @@ namespace internal {
 // finite, the new edge not already there); the faces still bad afterwards are returned in
 // `bad`. The flips are combinatorial: nothing here assumes the faces tile the plane; the
 // certificate stays the one at the top of this file (every face ccw, hull convex and wound
-// once). Each flip made is logged as its new edge, so undo_untangling() can restore `tr`.
+// once). Each flip made is logged, so undo_flips() can restore `tr`.
 template <class Triangulation>
 void untangle_by_flips(Triangulation& tr, std::vector<typename Triangulation::Face_handle>& bad,
                        std::vector<std::pair<typename Triangulation::Face_handle, int>>& stack,
-                       std::vector<std::pair<typename Triangulation::Vertex_handle,
-                                             typename Triangulation::Vertex_handle>>& log,
+                       Flip_log<Triangulation>& log,
                        std::vector<typename Triangulation::Face_handle>& touched)
 {
   using Face_handle = typename Triangulation::Face_handle;
@@ -98,7 +98,7 @@ void untangle_by_flips(Triangulation& tr, std::vector<typename Triangulation::Fa
          orientation(a->point(), d->point(), c->point()) != LEFT_TURN || tds.is_edge(a, d))
         continue;
       tds.flip(f, i); // f = (a, b, d), g = (d, c, a): see lawson_flip.h
-      log.emplace_back(a, d);
+      log.emplace_back(f, i);
       touched.push_back(f);
       touched.push_back(g);
       for(int k = 0; k < 3; ++k) {
@@ -113,20 +113,12 @@ void untangle_by_flips(Triangulation& tr, std::vector<typename Triangulation::Fa
   bad.erase(std::unique(bad.begin(), bad.end()), bad.end());
 }
 
-// Undoes the flips of untangle_by_flips(), latest first (each logged edge is flipped back).
+// Undoes the logged flips (certification's, untangle_by_flips()'s), latest first.
 template <class Triangulation>
-void undo_untangling(Triangulation& tr,
-                     std::vector<std::pair<typename Triangulation::Vertex_handle,
-                                           typename Triangulation::Vertex_handle>>& log)
+void undo_flips(Triangulation& tr, Flip_log<Triangulation>& log)
 {
-  for(auto it = log.rbegin(); it != log.rend(); ++it) {
-    typename Triangulation::Face_handle f;
-    int i = 0;
-    const bool found = tr.tds().is_edge(it->first, it->second, f, i);
-    CGAL_assertion(found);
-    if(found)
-      tr.tds().flip(f, i);
-  }
+  for(auto it = log.rbegin(); it != log.rend(); ++it)
+    undo_flip(tr.tds(), it->first, it->second);
   log.clear();
 }
 
@@ -354,8 +346,8 @@ public:
     return count;
   }
   const std::vector<Vertex_handle>& detached() const { return detached_; }
-  bool is_removed(Face_handle f) const { return removed_.contains(&*f); }
-  bool is_removed(const void* f) const { return removed_.contains(f); }
+  bool is_removed(Face_handle f) const { return is_removed(&*f); }
+  bool is_removed(const void* f) const { return carved_bitmap_ ? carved_bitmap_->contains(f) : removed_.contains(f); }
 
   // --- Modifying. ------------------------------------------------------------------------
 
@@ -372,10 +364,12 @@ public:
       high = (std::max)(high, Bitmap::value(&*f));
     }
     if(stack.size() > 4096 && Bitmap::fits(low, high, removed_list_.size() + stack.size())) {
-      Bitmap carved(low, high);
+      // Kept for is_removed(), asked about every face flipped before the carve.
+      carved_bitmap_.reset(new Bitmap(low, high));
       for(const Face_handle f : removed_list_)
-        carved.insert(&*f);
-      stack.erase(std::remove_if(stack.begin(), stack.end(), [&](const Edge& e) { return carved.contains(&*e.first); }),
+        carved_bitmap_->insert(&*f);
+      stack.erase(std::remove_if(stack.begin(), stack.end(),
+                                 [&](const Edge& e) { return carved_bitmap_->contains(&*e.first); }),
                   stack.end());
     } else {
       stack.erase(std::remove_if(stack.begin(), stack.end(),
@@ -467,8 +461,9 @@ public:
   }
 
   // After commit() (and a failed finish_hull()): restores the triangulation as it was before
-  // commit(): same vertices, same connectivity (new face objects).
-  void rollback()
+  // commit(): same vertices, same connectivity (new face objects: the faces of `log` that
+  // were carved are replaced by the new objects, which have the same slots).
+  void rollback(Flip_log<Triangulation>& log)
   {
     CGAL_precondition(keep_undo_log_ && committed_);
     for(const Face_handle f : created_)
@@ -494,6 +489,10 @@ public:
             tds_.set_adjacency(again[k], i, g, j);
       }
     }
+    for(auto& flip : log)
+      if(const std::size_t* at = old_index_.find(&*flip.first))
+        flip.first = again[*at];
+    carved_bitmap_.reset();
     committed_ = false;
   }
 
@@ -1086,6 +1085,7 @@ private:
   std::size_t rounds_ = 0, removed_finite_ = 0, diagonal_base_ = 0, outer_ = none, groups_ = 0, traced_ = 0;
 
   Address_table<std::size_t> removed_;   // carved face -> position in removed_list_
+  std::unique_ptr<Slot_bitmap<typename Tds::Face>> carved_bitmap_; // the same set, from commit() on
   std::vector<Face_handle> removed_list_;
   Address_table<char> detached_set_;     // vertices queued for carving their star
   std::vector<Vertex_handle> pending_, detached_;

@@ -20,6 +20,10 @@ namespace CGAL {
 namespace Delaunay_from_prediction {
 namespace internal {
 
+// Statistics::fallback_reason when Lawson's algorithm would need, or needed, more flips than
+// the budget.
+constexpr const char* flip_budget_exhausted = "the flip budget was exhausted";
+
 // The edge (b, c) between the ccw triangle (a, b, c) and the triangle on its other side, whose
 // third vertex is d, can be flipped to (a, d) keeping both faces counterclockwise: the
 // quadrilateral a, b, d, c is strictly convex.
@@ -31,19 +35,63 @@ bool flip_makes_ccw_faces(const Gt& gt, const Point& a, const Point& b, const Po
   return orientation(a, b, d) == LEFT_TURN && orientation(a, d, c) == LEFT_TURN;
 }
 
+// The default of flip_edges_while()'s `on_flip`: no log.
+struct No_flip_log
+{
+  template <class Face_handle>
+  void operator()(Face_handle, int) const
+  {}
+};
+
+// A flip, as logged for undo_flip(): the face and index it was called with.
+template <class Triangulation>
+using Flip_log = std::vector<std::pair<typename Triangulation::Face_handle, int>>;
+
+// Undoes tds.flip(f, i), given the same f and i right after it: every vertex and neighbour
+// slot of f and g = the face across, and the slots of the four faces around them that point
+// at f or g, are as they were before it (CGAL's flip of the new edge would bring back the
+// same faces, but in each other's objects: a log of earlier flips names face objects and
+// slots, so it must find them as they were). No edge lookup: exact even where the faces do
+// not form a triangulation (two edges between the same vertices).
+template <class Tds>
+void undo_flip(Tds& tds, typename Tds::Face_handle f, int i)
+{
+  // After the flip: f = (a, b, d) in slots (i, ccw(i), cw(i)), g = (d, c, a) in slots
+  // (j, ccw(j), cw(j)); before it f = (a, b, c), g = (d, c, b). See flip_edges_while().
+  const typename Tds::Face_handle g = f->neighbor(ccw(i));
+  const typename Tds::Vertex_handle a = f->vertex(i), b = f->vertex(ccw(i)), d = f->vertex(cw(i));
+  const int j = g->index(d);
+  const typename Tds::Vertex_handle c = g->vertex(ccw(j));
+  const typename Tds::Face_handle across_bd = f->neighbor(i), across_ca = g->neighbor(j);
+  const int at_bd = across_bd->index(f), at_ca = across_ca->index(g);
+  f->set_vertex(cw(i), c);
+  g->set_vertex(cw(j), b);
+  f->set_neighbor(i, g);
+  f->set_neighbor(ccw(i), across_ca);
+  g->set_neighbor(j, f);
+  g->set_neighbor(ccw(j), across_bd);
+  across_ca->set_neighbor(at_ca, f);
+  across_bd->set_neighbor(at_bd, g);
+  a->set_face(f);
+  b->set_face(f);
+  c->set_face(g);
+  d->set_face(g);
+}
+
 // The flip loop: pops candidate edges (face, index) from `stack` and flips each interior edge
 // for which `wants_flip(f, i, a, b, c, d)` holds ((b, c) the edge, a opposite in f, d opposite
 // in its neighbour) and whose quadrilateral is strictly convex, queueing the four edges around
 // every flip; until the stack is empty (returns true) or `max_flips` flips have been made
 // (returns false; the triangulation is still a valid triangulation of the same vertices). Any
 // edge may be listed, stale or twice: each is tested when popped. If `touched` is not null it
-// receives both faces of every flip. With `Wanted_flips_are_convex` the caller guarantees that
-// `wants_flip` implies a strictly convex quadrilateral, and the test is skipped.
-template <bool Wanted_flips_are_convex = false, class Triangulation, class WantsFlip>
+// receives both faces of every flip, and `on_flip(a, d)` the new edge of every flip. With
+// `Wanted_flips_are_convex` the caller guarantees that `wants_flip` implies a strictly convex
+// quadrilateral, and the test is skipped.
+template <bool Wanted_flips_are_convex = false, class Triangulation, class WantsFlip, class OnFlip = No_flip_log>
 bool flip_edges_while(Triangulation& tr,
                       std::vector<std::pair<typename Triangulation::Face_handle, int>>& stack,
                       WantsFlip wants_flip, std::size_t max_flips, std::size_t& flips,
-                      std::vector<typename Triangulation::Face_handle>* touched)
+                      std::vector<typename Triangulation::Face_handle>* touched, OnFlip on_flip = OnFlip())
 {
   using Face_handle = typename Triangulation::Face_handle;
   const auto& gt = tr.geom_traits();
@@ -102,6 +150,7 @@ bool flip_edges_while(Triangulation& tr,
     // edges are f's i and cw(i), g's j and cw(j).
     tds.flip(f, i);
     ++flips;
+    on_flip(f, i);
     if(touched != nullptr) {
       touched->push_back(f);
       touched->push_back(g);
