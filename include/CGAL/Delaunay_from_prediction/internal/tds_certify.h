@@ -138,7 +138,12 @@ const char* certify_triangulation(
       if(bad_faces == nullptr)
         return "a face is inverted or flat";
       bad_faces->push_back(f);
-      if(bad_faces->size() > max_bad_faces)
+      // Past the limit, or heading for 1.5 times the limit after a fair sample: at 1e6 points
+      // each moved by half the mean nearest-neighbour distance (6% of the faces turned over)
+      // the pass reached the limit half way, 0.05 s for nothing.
+      if(bad_faces->size() > max_bad_faces ||
+         (visited >= 65536 && double(bad_faces->size()) * double(all_faces) >
+                                  1.5 * double(max_bad_faces) * double(visited)))
         return "too many faces are inverted or flat for a local repair";
       continue;
     }
