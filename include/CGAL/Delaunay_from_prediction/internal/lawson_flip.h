@@ -84,7 +84,8 @@ void undo_flip(Tds& tds, typename Tds::Face_handle f, int i)
 // every flip; until the stack is empty (returns true) or `max_flips` flips have been made
 // (returns false; the triangulation is still a valid triangulation of the same vertices). Any
 // edge may be listed, stale or twice: each is tested when popped. If `touched` is not null it
-// receives both faces of every flip, and `on_flip(a, d)` the new edge of every flip. With
+// receives both faces of every flip, and `on_flip(f, i)` the face and index of every flip
+// (a Flip_log entry for undo_flip()). With
 // `Wanted_flips_are_convex` the caller guarantees that `wants_flip` implies a strictly convex
 // quadrilateral, and the test is skipped.
 template <bool Wanted_flips_are_convex = false, class Triangulation, class WantsFlip, class OnFlip = No_flip_log>
