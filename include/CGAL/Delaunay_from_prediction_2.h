@@ -597,11 +597,11 @@ Statistics make_delaunay(Triangulation& tr, const NamedParameters& np = paramete
   // Every flip until the triangulation is certified again (inline, untangling) is logged: if
   // the rebuild below finds two vertices at the same point, they are undone before it
   // throws, so that `tr` is left as it was (a carve rolled back updates the log).
-  internal::Flip_log<Triangulation> untangled;
+  internal::Flip_log<Triangulation> flips_before_carve;
   std::vector<Face_handle> touched;
   // Lawson's flips start during certification, except for the t-division, which plans its
   // regions from the edges that fail in the prediction as given.
-  internal::Inline_flips<Triangulation> inline_flips{max_flips, stats.flips, touched, untangled};
+  internal::Inline_flips<Triangulation> inline_flips{max_flips, stats.flips, touched, flips_before_carve};
   const char* why = strategy == Strategy::rebuild
                         ? internal::rebuild_requested
                         : internal::certify_triangulation(tr, stack, stats.edges_tested, hull_is_convex,
@@ -639,15 +639,15 @@ Statistics make_delaunay(Triangulation& tr, const NamedParameters& np = paramete
     }
   }
   if(why == nullptr && !bad.empty()) {
-    const std::size_t inline_flipped = untangled.size();
-    internal::untangle_by_flips(tr, bad, stack, untangled, touched);
-    stats.flips += untangled.size() - inline_flipped;
+    const std::size_t inline_flipped = flips_before_carve.size();
+    internal::untangle_by_flips(tr, bad, stack, flips_before_carve, touched);
+    stats.flips += flips_before_carve.size() - inline_flipped;
     if(!bad.empty()) {
-      why = internal::carve_in_place(tr, bad, stack, touched, untangled, max_flips, stats);
+      why = internal::carve_in_place(tr, bad, stack, touched, flips_before_carve, max_flips, stats);
       if(why == nullptr)
         return stats;
       if(why == internal::flip_budget_exhausted)
-        untangled.clear(); // the carve was committed: a triangulation again, nothing to undo
+        flips_before_carve.clear(); // the carve was committed: a triangulation again, nothing to undo
     }
   }
   std::vector<const void*> hull_faces; // finite faces made by convexify_hull
@@ -660,7 +660,7 @@ Statistics make_delaunay(Triangulation& tr, const NamedParameters& np = paramete
       return stats;
     }
     why = internal::flip_budget_exhausted;
-    untangled.clear(); // a triangulation again: no duplicates, nothing to undo
+    flips_before_carve.clear(); // a triangulation again: no duplicates, nothing to undo
   }
   stats.fell_back = true;
   stats.fallback_reason = why;
@@ -669,7 +669,7 @@ Statistics make_delaunay(Triangulation& tr, const NamedParameters& np = paramete
   try {
     internal::rebuild_keeping_vertices(tr, stats); // leaves `tr` as it is when it throws
   } catch(const Invalid_prediction&) {
-    internal::undo_flips(tr, untangled);
+    internal::undo_flips(tr, flips_before_carve);
     throw;
   }
   return stats;

@@ -105,15 +105,15 @@ const char* certify_triangulation(
     return false;
   };
   auto log_flip = [&](Face_handle f, int i) { inline_flips->log.emplace_back(f, i); };
-  // A pass heading for more than `max_bad_faces` faces that are not ccw ends in a rebuild:
+  // Whether, after a sample of at least `sample` faces, the faces not ccw so far, scaled to
+  // all faces, exceed `times` the limit. A pass heading past the limit ends in a rebuild:
   // flips made on the way are wasted (moves of 0.5 spacing at 1e6 points: 337,000 flips before
-  // the pass gave up, the call 1.2 times a rebuild). So the flips stop while the faces not
-  // ccw so far, scaled to all faces, exceed the limit (after a first sample of 4096 faces).
+  // the pass gave up, the call 1.2 times a rebuild), so the flips stop while it heads there.
   const std::size_t all_faces = tr.tds().number_of_faces();
   std::size_t visited = 0;
-  auto heading_for_rebuild = [&] {
-    return bad_faces != nullptr && visited >= 4096 &&
-           double(bad_faces->size()) * double(all_faces) > double(max_bad_faces) * double(visited);
+  auto bad_faces_heading_past = [&](double times, std::size_t sample) {
+    return bad_faces != nullptr && visited >= sample &&
+           double(bad_faces->size()) * double(all_faces) > times * double(max_bad_faces) * double(visited);
   };
   // The pass is bound by memory latency (a face, its three vertices and up to three
   // neighbours each): the vertices and neighbours of the face 16 ahead are prefetched.
@@ -141,9 +141,7 @@ const char* certify_triangulation(
       // Past the limit, or heading for 1.5 times the limit after a fair sample: at 1e6 points
       // each moved by half the mean nearest-neighbour distance (6% of the faces turned over)
       // the pass reached the limit half way, 0.05 s for nothing.
-      if(bad_faces->size() > max_bad_faces ||
-         (visited >= 65536 && double(bad_faces->size()) * double(all_faces) >
-                                  1.5 * double(max_bad_faces) * double(visited)))
+      if(bad_faces->size() > max_bad_faces || bad_faces_heading_past(1.5, 65536))
         return "too many faces are inverted or flat for a local repair";
       continue;
     }
@@ -162,7 +160,7 @@ const char* certify_triangulation(
       }
       inline_flips->edges_failing += flipped ? 0 : 1; // found before a flip reached it
       if(orientation(d, f->vertex(cw(i))->point(), f->vertex(ccw(i))->point()) != LEFT_TURN ||
-         heading_for_rebuild()) {
+         bad_faces_heading_past(1., 4096)) {
         non_delaunay.emplace_back(f, i);
         continue;
       }
