@@ -234,12 +234,13 @@ const char* carve_in_place(Triangulation& tr, const std::vector<typename Triangu
 // their inner vertices, leaving the flips to the caller; returns null then, otherwise why not
 // with `tr` untouched. With `check_duplicates`, returns first if a vertex to reinsert is at
 // the point of another; otherwise `on_duplicate(v, w)` handles it as in reinsert_vertex_objects().
-template <class Triangulation, class OnDuplicate>
+template <class Triangulation, class OnDuplicate, class MadeEarlier = bool (*)(const void*)>
 const char* repair_by_regions(Triangulation& tr, std::unique_ptr<Region_repair<Triangulation>>& regions,
                               const std::vector<typename Triangulation::Face_handle>& bad, bool hull_is_convex,
                               std::vector<std::pair<typename Triangulation::Face_handle, int>>& stack,
                               bool stack_fails, std::size_t region_size, std::vector<const void*>& modified,
-                              Statistics& stats, bool check_duplicates, OnDuplicate on_duplicate)
+                              Statistics& stats, bool check_duplicates, OnDuplicate on_duplicate,
+                              MadeEarlier made_earlier = [](const void*) { return false; })
 {
   const std::size_t n = tr.number_of_vertices();
   const auto& gt = tr.geom_traits();
@@ -280,9 +281,11 @@ const char* repair_by_regions(Triangulation& tr, std::unique_ptr<Region_repair<T
     return why;
   if(check_duplicates && has_duplicate_of(tr, regions->detached()))
     return "two vertices are at the same point";
+  // Faces an earlier stage made (the carve's fill, the import's) are not predicted faces:
+  // not counted as carved.
+  stats.faces_carved += regions->faces_removed_if([&](const void* f) { return !made_earlier(f); });
   regions->commit(stack);
   regions->reinsert(stack, modified, on_duplicate);
-  stats.faces_carved += regions->faces_removed();
   stats.holes_refilled += regions->holes();
   stats.points_reinserted += regions->detached().size();
   return nullptr;
@@ -477,7 +480,8 @@ Statistics delaunay_from_prediction(const PointRange& points, const FaceRange& f
           internal::merge_index_info_of(same, v);
           result.tds().delete_vertex(v);
           ++duplicates;
-        });
+        },
+        [&](const void* f) { return (repair && repair->is_created(f)) || filled_by_import(f); });
     // When the t-division does not pay (or cannot be planned), `result` is untouched: a
     // valid triangulation after the carve, which the flips finish as with Strategy::carve.
     if(why != nullptr)

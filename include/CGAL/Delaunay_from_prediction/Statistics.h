@@ -29,8 +29,9 @@ public:
 
 /*!
 \ingroup PkgDelaunayFromPredictionRef
-Reports what a call of `delaunay_from_prediction()` or `make_delaunay()` did. Every member is
-filled at negligible cost.
+Reports what a call of `delaunay_from_prediction()`, `make_delaunay()`,
+`delaunay_from_predicted_edges()` or `delaunay_from_spanning_graph()` did. Every member is
+filled at negligible cost; members a call has no use for stay 0.
 */
 struct Statistics
 {
@@ -83,6 +84,19 @@ struct Statistics
   /// `Strategy::t_division`: number of vertices on region boundaries (\f$|V_B|\f$), whose
   /// Delaunay triangulation was built.
   std::size_t boundary_vertices = 0;
+  /// `delaunay_from_spanning_graph()` and the functions built on it: number of edges read.
+  std::size_t edges_in = 0;
+  /// number of points located by a walk from a vertex already inserted (the spanning-tree
+  /// insertion of Section 3 of the paper).
+  std::size_t points_located = 0;
+  /// number of faces those walks entered, fallback walks included: divided by
+  /// `points_located`, the mean cost of a location.
+  std::size_t faces_visited = 0;
+  /// number of those walks that passed their cap (about \f$\log_2 n + 8\f$ faces) and
+  /// started again from a vertex inserted near the point (a wrong edge of the tree, mostly).
+  std::size_t walk_fallbacks = 0;
+  /// number of rounds of the gradation (random samples) that inserted the points.
+  std::size_t insertion_rounds = 0;
   /// why the prediction was not used as it is: empty when it was a triangulation of the
   /// points; otherwise a static string such as `"a face is degenerate"`.
   const char* fallback_reason = "";

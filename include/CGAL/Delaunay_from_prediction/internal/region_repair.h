@@ -414,6 +414,15 @@ public:
   }
   std::size_t boundary_vertices() const { return vb_.size(); }
   std::size_t faces_removed() const { return removed_finite_; }
+  // The finite faces to remove whose address satisfies `pred` (before commit()).
+  template <class Pred>
+  std::size_t faces_removed_if(Pred pred) const
+  {
+    std::size_t count = 0;
+    for(std::size_t k = 0; k < removed_.size(); ++k) // empty when nothing was marked
+      count += (removed_[k] && region_[k] != outside && pred(static_cast<const void*>(&*faces_[k]))) ? 1 : 0;
+    return count;
+  }
   std::size_t holes() const { return holes_; }
   // The vertices left without a face (V_bad), reinserted by reinsert().
   const std::vector<Vertex_handle>& detached() const { return detached_; }

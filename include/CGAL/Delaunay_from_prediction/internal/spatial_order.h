@@ -25,6 +25,50 @@ namespace CGAL {
 namespace Delaunay_from_prediction {
 namespace internal {
 
+// A grid cell with more points than this (the grids aim at four) is sorted again.
+constexpr std::size_t crowded_cell = 64;
+
+// Sorts the indices in [first, last) along a serpentine grid over their own bounding box,
+// about four points a cell, and crowded cells again, `depth` levels deep at most.
+template <class Index, class PointAt>
+void sort_crowded_cell(Index* first, Index* last, PointAt point_at, int depth)
+{
+  const std::size_t m = std::size_t(last - first);
+  double xmin = CGAL::to_double(point_at(*first).x()), xmax = xmin;
+  double ymin = CGAL::to_double(point_at(*first).y()), ymax = ymin;
+  for(const Index* i = first; i != last; ++i) {
+    const double x = CGAL::to_double(point_at(*i).x()), y = CGAL::to_double(point_at(*i).y());
+    xmin = (std::min)(xmin, x);
+    xmax = (std::max)(xmax, x);
+    ymin = (std::min)(ymin, y);
+    ymax = (std::max)(ymax, y);
+  }
+  const std::size_t side = (std::max)(std::size_t(2), std::size_t(std::sqrt(double(m) / 4)));
+  const double sx = xmax > xmin ? double(side) / (xmax - xmin) : 0;
+  const double sy = ymax > ymin ? double(side) / (ymax - ymin) : 0;
+  const double last_cell = double(side - 1);
+  std::vector<std::uint32_t> key(m), start(side * side + 1, 0);
+  for(std::size_t k = 0; k < m; ++k) {
+    const auto& p = point_at(first[k]);
+    const double fx = (CGAL::to_double(p.x()) - xmin) * sx, fy = (CGAL::to_double(p.y()) - ymin) * sy;
+    const std::size_t cx = std::size_t(fx > 0 ? (std::min)(fx, last_cell) : 0);
+    const std::size_t cy = std::size_t(fy > 0 ? (std::min)(fy, last_cell) : 0);
+    key[k] = std::uint32_t(cy * side + ((cy & 1) ? side - 1 - cx : cx));
+    ++start[key[k] + 1];
+  }
+  for(std::size_t c = 1; c < start.size(); ++c)
+    start[c] += start[c - 1];
+  std::vector<Index> sorted(m);
+  for(std::size_t k = 0; k < m; ++k)
+    sorted[start[key[k]]++] = first[k];
+  std::copy(sorted.begin(), sorted.end(), first);
+  if(depth >= 6)
+    return;
+  for(std::size_t c = 0, begin = 0; c + 1 < start.size(); begin = start[c], ++c)
+    if(start[c] - begin > crowded_cell && start[c] - begin < m) // m: all equal points, no progress
+      sort_crowded_cell(first + begin, first + start[c], point_at, depth + 1);
+}
+
 // Sorts `indices` (of points) along a serpentine grid over their bounding box, about four
 // points per cell, rows alternately left to right and right to left, so that consecutive
 // indices name nearby points. With `biased_rounds`, the points are first dealt into rounds
@@ -82,6 +126,12 @@ void sort_along_grid(std::vector<Index>& indices, PointAt point_at, bool biased_
   for(std::size_t k = 0; k < m; ++k)
     sorted[start[key[k]]++] = indices[k];
   indices.swap(sorted);
+  // Cells far above their share (clusters, a density varying by orders of magnitude) are
+  // sorted again along a grid of their own: without it, 1e6 points of density growing 10^8
+  // times across the square were inserted 1.9 times slower than after CGAL's spatial_sort.
+  for(std::size_t c = 0, first = 0; c + 1 < start.size(); first = start[c], ++c)
+    if(start[c] - first > crowded_cell)
+      sort_crowded_cell(indices.data() + first, indices.data() + start[c], point_at, 1);
 }
 
 class Spatial_order

@@ -1,0 +1,183 @@
+// Copyright (c) 2026 Delaunay_from_prediction contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Author(s): Delaunay_from_prediction founding team
+//
+// Entry point: the Delaunay triangulation of points from a predicted graph on them (a
+// spanning tree, a neighbour graph, the edges of a triangulation, crossing or not), by the
+// spanning-tree insertion of Section 3 of the paper (internal/spanning_tree_insertion.h).
+
+#ifndef CGAL_DELAUNAY_FROM_PREDICTION_SPANNING_GRAPH_H
+#define CGAL_DELAUNAY_FROM_PREDICTION_SPANNING_GRAPH_H
+
+#include <CGAL/Delaunay_from_prediction/Statistics.h>
+#include <CGAL/Delaunay_from_prediction/parameters.h>
+#include <CGAL/Delaunay_from_prediction/internal/input_check.h>
+#include <CGAL/Delaunay_from_prediction/internal/spanning_tree_insertion.h>
+
+#include <cstddef>
+#include <cstdint>
+#include <iterator>
+#include <sstream>
+#include <tuple>
+#include <type_traits>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Delaunay_from_prediction {
+namespace internal {
+
+template <class Edge, class = void>
+struct is_tuple_like : std::false_type {};
+template <class Edge>
+struct is_tuple_like<Edge, std::void_t<decltype(std::tuple_size<Edge>::value)>> : std::true_type {};
+
+// End k (0 or 1) of an edge given as a std::pair, std::tuple or std::array, or as anything
+// with operator[].
+template <class Edge>
+auto edge_end(const Edge& e, int k)
+{
+  if constexpr(is_tuple_like<Edge>::value)
+    return k == 0 ? std::get<0>(e) : std::get<1>(e);
+  else
+    return e[k];
+}
+
+// Reads the two ends of edge number `k`, checking that each is an index in [0, n) and that
+// they differ; throws Invalid_prediction naming the edge otherwise.
+template <class Edge>
+void read_edge(const Edge& edge, std::size_t k, std::size_t n, std::size_t& a, std::size_t& b)
+{
+  std::size_t ends[2];
+  for(int j = 0; j < 2; ++j) {
+    const auto raw = edge_end(edge, j);
+    using Index = std::decay_t<decltype(raw)>;
+    static_assert(std::is_integral<Index>::value, "Delaunay_from_prediction: edge ends must be integers");
+    bool out_of_range = false;
+    if constexpr(std::is_signed<Index>::value)
+      out_of_range = raw < 0 || static_cast<unsigned long long>(raw) >= n;
+    else
+      out_of_range = static_cast<unsigned long long>(raw) >= n;
+    if(out_of_range) {
+      std::ostringstream msg;
+      msg << "Delaunay_from_prediction: edge " << k << " has index " << +raw << " (end " << j
+          << "), outside the point range [0, " << n << ")";
+      throw Invalid_prediction(msg.str());
+    }
+    ends[j] = std::size_t(raw);
+  }
+  if(ends[0] == ends[1]) {
+    std::ostringstream msg;
+    msg << "Delaunay_from_prediction: edge " << k << " joins point " << ends[0] << " to itself";
+    throw Invalid_prediction(msg.str());
+  }
+  a = ends[0];
+  b = ends[1];
+}
+
+// Checks `edges` against n points and returns their ends, in pairs (throws before anything
+// else is done).
+template <class EdgeRange>
+std::vector<std::uint32_t> checked_edge_ends(const EdgeRange& edges, std::size_t n)
+{
+  std::vector<std::uint32_t> ends;
+  ends.reserve(2 * std::size_t(std::distance(std::begin(edges), std::end(edges))));
+  std::size_t k = 0;
+  for(const auto& e : edges) {
+    std::size_t a, b;
+    read_edge(e, k++, n, a, b);
+    ends.push_back(std::uint32_t(a));
+    ends.push_back(std::uint32_t(b));
+  }
+  return ends;
+}
+
+// The adjacency of the n points from edge ends listed in pairs.
+inline Adjacency adjacency_of(const std::vector<std::uint32_t>& ends, std::size_t n)
+{
+  Adjacency g;
+  g.offsets.assign(n + 1, 0);
+  for(const std::uint32_t v : ends) // a pass of its own: interleaved with the reading, slower
+    ++g.offsets[v + 1];
+  fill_adjacency(g, ends);
+  return g;
+}
+
+} // namespace internal
+
+/*!
+\ingroup PkgDelaunayFromPredictionRef
+Builds the Delaunay triangulation of `points` into `dt`, using a graph on the points as a
+prediction: a spanning tree (for example a guessed Euclidean minimum spanning tree), a
+neighbour graph, or the edges of a predicted triangulation. Edges may cross, repeat, and need
+not be Delaunay edges: a wrong edge only costs time.
+
+A spanning tree of the graph is taken (breadth-first), the points are dealt into the rounds
+of a gradation of random samples weighted by their degree in the tree, and each point is
+inserted by CGAL's incremental Delaunay insertion after a walk in the current triangulation
+from the vertex of its nearest tree ancestor already inserted (Theorem 3.3 of the paper, with
+Lemma 3.2's location by walks along tree edges). A walk longer than about
+\f$\log_2 n + 8\f$ faces starts again from a vertex inserted near the point. Expected time
+\f$O((n + D_T \log n) \log^* n)\f$ in the model of the paper, where \f$D_T\f$ is the number of
+tree edges that are not Delaunay edges; with a tree of Delaunay edges the build needs no
+spatial sort. A graph whose edges are much longer than the spacing of the points (the
+median of 255 sampled edges over 32 times the side of the area per point: a random tree) or
+that has more than \f$n/64\f$ connected components is not used at all, and when the walks keep
+missing in a round (more than half of them past their cap), the remaining points are
+inserted in a spatial order, as a build from scratch would (`Statistics::fell_back` in all
+three cases).
+
+The result is exactly the triangulation CGAL's `Delaunay_triangulation_2` builds from the same
+points (co-circular ties broken by CGAL's symbolic perturbation), whatever the graph.
+
+\tparam PointRange a random-access range of `DT::Point`.
+\tparam EdgeRange a range of edges, each a `std::pair`, `std::tuple` or `std::array` of two
+        integer indices into `points`, or anything with `operator[](0..1)` returning one.
+\tparam DT a `CGAL::Delaunay_triangulation_2<Gt, Tds>`. If its vertices have an `info()`
+        assignable from `std::size_t`, every vertex's `info()` is set to the index of its point
+        (for duplicate points, the smallest of their indices).
+\tparam NamedParameters a sequence of named parameters (none is used yet).
+
+\param points the points.
+\param edges the predicted graph.
+\param dt receives the result; cleared first.
+
+\returns what the call did: `edges_in`, `points_located`, `faces_visited` (divided by
+         `points_located`: the mean length of a walk), `walk_fallbacks`, `insertion_rounds`,
+         `duplicate_points`, `fell_back`.
+\throws Invalid_prediction if a point has a non-finite coordinate, or an edge has an end out of
+        range or joins a point to itself. Then `dt` is unchanged.
+*/
+template <class PointRange, class EdgeRange, class DT,
+          class NamedParameters = parameters::Default_named_parameters>
+Statistics delaunay_from_spanning_graph(const PointRange& points, const EdgeRange& edges, DT& dt,
+                                        const NamedParameters& np = parameters::default_values())
+{
+  (void)np;
+  Statistics stats;
+  const auto point_at = std::begin(points);
+  const std::size_t n = std::size_t(std::distance(std::begin(points), std::end(points)));
+  internal::check_points_are_finite(point_at, n);
+  if(n >= std::size_t(internal::no_rank))
+    throw Invalid_prediction("Delaunay_from_prediction: 2^32 - 1 points or more are not supported by "
+                             "delaunay_from_spanning_graph");
+  const std::vector<std::uint32_t> ends = internal::checked_edge_ends(edges, n);
+  stats.edges_in = ends.size() / 2;
+  dt.clear();
+  if(internal::edges_look_random(point_at, n, ends, 0x5eed7ee5ull)) {
+    std::vector<std::size_t> indices(n);
+    for(std::size_t i = 0; i < n; ++i)
+      indices[i] = i;
+    internal::insert_points(dt, point_at, indices, stats);
+    stats.fell_back = true;
+    stats.fallback_reason = "the graph's edges are far longer than the spacing of the points";
+    return stats;
+  }
+  internal::insert_along_spanning_forest(dt, point_at, n, internal::adjacency_of(ends, n), stats);
+  return stats;
+}
+
+} // namespace Delaunay_from_prediction
+} // namespace CGAL
+
+#endif // CGAL_DELAUNAY_FROM_PREDICTION_SPANNING_GRAPH_H
