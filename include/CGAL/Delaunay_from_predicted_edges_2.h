@@ -26,53 +26,6 @@ namespace CGAL {
 namespace Delaunay_from_prediction {
 namespace internal {
 
-template <class Edge, class = void>
-struct has_first_and_second : std::false_type {};
-template <class Edge>
-struct has_first_and_second<Edge, std::void_t<decltype(std::declval<const Edge&>().first),
-                                              decltype(std::declval<const Edge&>().second)>>
-    : std::true_type {};
-
-// The end j (0 or 1) of an edge given as a pair or as anything with operator[].
-template <class Edge>
-auto edge_end(const Edge& e, int j)
-{
-  if constexpr(has_first_and_second<Edge>::value)
-    return j == 0 ? e.first : e.second;
-  else
-    return e[j];
-}
-
-// Reads and validates edge number k: both ends in [0, n) and different.
-template <class Edge>
-std::pair<std::size_t, std::size_t> read_edge(const Edge& e, std::size_t k, std::size_t n)
-{
-  std::size_t out[2];
-  for(int j = 0; j < 2; ++j) {
-    const auto raw = edge_end(e, j);
-    using Index = std::decay_t<decltype(raw)>;
-    static_assert(std::is_integral<Index>::value, "Delaunay_from_prediction: edge ends must be integers");
-    bool out_of_range = false;
-    if constexpr(std::is_signed<Index>::value)
-      out_of_range = raw < 0 || static_cast<unsigned long long>(raw) >= n;
-    else
-      out_of_range = static_cast<unsigned long long>(raw) >= n;
-    if(out_of_range) {
-      std::ostringstream msg;
-      msg << "Delaunay_from_prediction: edge " << k << " has index " << +raw << " (end " << j
-          << "), outside the point range [0, " << n << ")";
-      throw Invalid_prediction(msg.str());
-    }
-    out[j] = static_cast<std::size_t>(raw);
-  }
-  if(out[0] == out[1]) {
-    std::ostringstream msg;
-    msg << "Delaunay_from_prediction: edge " << k << " joins index " << out[0] << " to itself";
-    throw Invalid_prediction(msg.str());
-  }
-  return {out[0], out[1]};
-}
-
 // The triangles of the graph: every three points pairwise joined by an edge, found by
 // intersecting the sorted neighbour lists of the two ends of each edge (each triangle once,
 // from its two smallest indices). Purely combinatorial and O(m d) for m edges of degree at

@@ -16,6 +16,8 @@
 
 #include "test_util.h"
 
+#include <CGAL/Delaunay_from_predicted_edges_2.h> // both edge entry points in one unit
+
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Simple_cartesian.h>
@@ -381,7 +383,7 @@ void bad_input()
     Scope s("loop");
     Edges bad = tree;
     bad.emplace_back(9, 9);
-    DFP_CHECK(throws_naming(points, bad, "joins point 9 to itself"));
+    DFP_CHECK(throws_naming(points, bad, "joins index 9 to itself"));
     DFP_CHECK(unchanged());
   }
   {

@@ -27,54 +27,6 @@ namespace CGAL {
 namespace Delaunay_from_prediction {
 namespace internal {
 
-template <class Edge, class = void>
-struct is_tuple_like : std::false_type {};
-template <class Edge>
-struct is_tuple_like<Edge, std::void_t<decltype(std::tuple_size<Edge>::value)>> : std::true_type {};
-
-// End k (0 or 1) of an edge given as a std::pair, std::tuple or std::array, or as anything
-// with operator[].
-template <class Edge>
-auto edge_end(const Edge& e, int k)
-{
-  if constexpr(is_tuple_like<Edge>::value)
-    return k == 0 ? std::get<0>(e) : std::get<1>(e);
-  else
-    return e[k];
-}
-
-// Reads the two ends of edge number `k`, checking that each is an index in [0, n) and that
-// they differ; throws Invalid_prediction naming the edge otherwise.
-template <class Edge>
-void read_edge(const Edge& edge, std::size_t k, std::size_t n, std::size_t& a, std::size_t& b)
-{
-  std::size_t ends[2];
-  for(int j = 0; j < 2; ++j) {
-    const auto raw = edge_end(edge, j);
-    using Index = std::decay_t<decltype(raw)>;
-    static_assert(std::is_integral<Index>::value, "Delaunay_from_prediction: edge ends must be integers");
-    bool out_of_range = false;
-    if constexpr(std::is_signed<Index>::value)
-      out_of_range = raw < 0 || static_cast<unsigned long long>(raw) >= n;
-    else
-      out_of_range = static_cast<unsigned long long>(raw) >= n;
-    if(out_of_range) {
-      std::ostringstream msg;
-      msg << "Delaunay_from_prediction: edge " << k << " has index " << +raw << " (end " << j
-          << "), outside the point range [0, " << n << ")";
-      throw Invalid_prediction(msg.str());
-    }
-    ends[j] = std::size_t(raw);
-  }
-  if(ends[0] == ends[1]) {
-    std::ostringstream msg;
-    msg << "Delaunay_from_prediction: edge " << k << " joins point " << ends[0] << " to itself";
-    throw Invalid_prediction(msg.str());
-  }
-  a = ends[0];
-  b = ends[1];
-}
-
 // Checks `edges` against n points and returns their ends, in pairs (throws before anything
 // else is done).
 template <class EdgeRange>
@@ -84,10 +36,9 @@ std::vector<std::uint32_t> checked_edge_ends(const EdgeRange& edges, std::size_t
   ends.reserve(2 * std::size_t(std::distance(std::begin(edges), std::end(edges))));
   std::size_t k = 0;
   for(const auto& e : edges) {
-    std::size_t a, b;
-    read_edge(e, k++, n, a, b);
-    ends.push_back(std::uint32_t(a));
-    ends.push_back(std::uint32_t(b));
+    const auto ab = read_edge(e, k++, n);
+    ends.push_back(std::uint32_t(ab.first));
+    ends.push_back(std::uint32_t(ab.second));
   }
   return ends;
 }

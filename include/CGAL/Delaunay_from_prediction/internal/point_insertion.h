@@ -6,8 +6,8 @@
 // to the face that holds the point, then, in the common case of a point strictly inside a
 // finite face, the split and the flips around the new vertex with the package's filtered
 // in-circle test; any other case (on an edge or a vertex, outside the hull, dimension below
-// 2) is left to CGAL's insertion. Used by every insertion of the package: the from-scratch
-// builds of rebuild.h and the spanning-tree insertion.
+// 2) is left to CGAL's insertion. Used by the from-scratch builds of rebuild.h and by the
+// spanning-tree insertion.
 
 #ifndef CGAL_DELAUNAY_FROM_PREDICTION_INTERNAL_POINT_INSERTION_H
 #define CGAL_DELAUNAY_FROM_PREDICTION_INTERNAL_POINT_INSERTION_H

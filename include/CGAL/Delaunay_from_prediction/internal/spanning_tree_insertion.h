@@ -11,8 +11,8 @@
 // insertion of rebuild.h, so no input costs much more than a build from scratch.
 //
 // What differs from the paper, and why:
-// - The rounds insert points one by one with CGAL's incremental insertion (the lower
-//   envelopes of the proof are that insertion's result); conflict lists are not kept: each
+// - The rounds insert points one by one by incremental insertion (point_insertion.h; the
+//   lower envelopes of the proof are that insertion's result); conflict lists are not kept: each
 //   point is located when it is inserted, by a walk in the current triangulation from the
 //   nearest ancestor in the tree already inserted (the paper walks along every tree edge in
 //   every round; the walk from an ancestor is the same walk with the intermediate points
@@ -20,9 +20,11 @@
 // - The fallback point location is a jump to the last vertex inserted in the point's cell of
 //   a uniform grid (two resolutions), then an uncapped walk: expected O(1) steps on
 //   well-spread points, instead of the O(log n) point location structure of the proof.
-// - The tree is a depth-first tree of the given graph (the graph itself when it is a tree);
-//   points are scanned in its preorder, so that consecutive insertions are near each other
-//   in the plane and in memory.
+// - The tree is the breadth-first tree of the given graph (the graph itself when it is a
+//   tree); points are scanned in its depth-first preorder, so that consecutive insertions are
+//   near each other in the plane and in memory.
+// - The gradation has ratio 8 (see gradation_rounds()), and a graph whose edges are far too
+//   long to help is told before any of this (edges_look_random()).
 
 #ifndef CGAL_DELAUNAY_FROM_PREDICTION_INTERNAL_SPANNING_TREE_INSERTION_H
 #define CGAL_DELAUNAY_FROM_PREDICTION_INTERNAL_SPANNING_TREE_INSERTION_H

@@ -127,8 +127,9 @@ void sort_along_grid(std::vector<Index>& indices, PointAt point_at, bool biased_
     sorted[start[key[k]]++] = indices[k];
   indices.swap(sorted);
   // Cells far above their share (clusters, a density varying by orders of magnitude) are
-  // sorted again along a grid of their own: without it, 1e6 points of density growing 10^8
-  // times across the square were inserted 1.9 times slower than after CGAL's spatial_sort.
+  // sorted again along a grid of their own: without it, a build of 1e6 points of density
+  // varying 10^8 times across the square (x = u^4, y = v^4) took 1.6 times CGAL's time; 0.8
+  // times with it.
   for(std::size_t c = 0, first = 0; c + 1 < start.size(); first = start[c], ++c)
     if(start[c] - first > crowded_cell)
       sort_crowded_cell(indices.data() + first, indices.data() + start[c], point_at, 1);
