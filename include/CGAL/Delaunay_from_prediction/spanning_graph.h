@@ -92,6 +92,7 @@ points (co-circular ties broken by CGAL's symbolic perturbation), whatever the g
 \param points the points.
 \param edges the predicted graph.
 \param dt receives the result; cleared first.
+\param np optional named parameters, accepted for the interface to grow; none is used yet.
 
 \returns what the call did: `edges_in`, `points_located`, `faces_visited` (divided by
          `points_located`: the mean length of a walk), `walk_fallbacks`, `insertion_rounds`,
