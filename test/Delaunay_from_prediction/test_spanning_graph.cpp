@@ -410,10 +410,12 @@ void preorder_forest()
         edges.emplace_back(a, b);
     }
     Scope s("random graph ", round, ", n = ", n, ", m = ", edges.size());
-    const auto graph = DFP::internal::make_adjacency(n, edges.size(), [&](std::size_t k, std::size_t& a, std::size_t& b) {
-      a = edges[k].first;
-      b = edges[k].second;
-    });
+    std::vector<std::uint32_t> ends;
+    for(const Edge& e : edges) {
+      ends.push_back(std::uint32_t(e.first));
+      ends.push_back(std::uint32_t(e.second));
+    }
+    const auto graph = DFP::internal::adjacency_of(ends, n);
     const auto forest = DFP::internal::preorder_spanning_forest(graph);
     std::set<Edge> graph_edges;
     for(const Edge& e : edges) {

@@ -43,17 +43,6 @@ std::vector<std::uint32_t> checked_edge_ends(const EdgeRange& edges, std::size_t
   return ends;
 }
 
-// The adjacency of the n points from edge ends listed in pairs.
-inline Adjacency adjacency_of(const std::vector<std::uint32_t>& ends, std::size_t n)
-{
-  Adjacency g;
-  g.offsets.assign(n + 1, 0);
-  for(const std::uint32_t v : ends) // a pass of its own: interleaved with the reading, slower
-    ++g.offsets[v + 1];
-  fill_adjacency(g, ends);
-  return g;
-}
-
 } // namespace internal
 
 /*!

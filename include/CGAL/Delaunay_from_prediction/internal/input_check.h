@@ -39,29 +39,33 @@ void check_points_are_finite(PointIterator points, std::size_t n)
   }
 }
 
+// An index into n points read from item `k` (a face or an edge), at `slot` `j` of it:
+// throws naming them if it is not in [0, n) (a negative signed index included).
+template <class Raw>
+std::size_t checked_index(const Raw raw, std::size_t n, const char* item, std::size_t k, const char* slot, int j)
+{
+  static_assert(std::is_integral<Raw>::value, "Delaunay_from_prediction: indices must be integers");
+  bool out_of_range = false;
+  if constexpr(std::is_signed<Raw>::value)
+    out_of_range = raw < 0 || static_cast<unsigned long long>(raw) >= n;
+  else
+    out_of_range = static_cast<unsigned long long>(raw) >= n;
+  if(out_of_range) {
+    std::ostringstream msg;
+    msg << "Delaunay_from_prediction: " << item << " " << k << " has index " << +raw << " (" << slot << " " << j
+        << "), outside the point range [0, " << n << ")";
+    throw Invalid_prediction(msg.str());
+  }
+  return static_cast<std::size_t>(raw);
+}
+
 // Reads the three indices of face number `k` and validates them: each in [0, n), all three
 // different. Works for any face type with operator[](0..2) returning an integer.
 template <class Face>
 void read_face(const Face& face, std::size_t k, std::size_t n, std::size_t out[3])
 {
-  for(int j = 0; j < 3; ++j) {
-    const auto raw = face[j];
-    using Index = std::decay_t<decltype(raw)>;
-    static_assert(std::is_integral<Index>::value,
-                  "Delaunay_from_prediction: face indices must be integers");
-    bool out_of_range = false;
-    if constexpr(std::is_signed<Index>::value)
-      out_of_range = raw < 0 || static_cast<unsigned long long>(raw) >= n;
-    else
-      out_of_range = static_cast<unsigned long long>(raw) >= n;
-    if(out_of_range) {
-      std::ostringstream msg;
-      msg << "Delaunay_from_prediction: face " << k << " has index " << +raw
-          << " (position " << j << "), outside the point range [0, " << n << ")";
-      throw Invalid_prediction(msg.str());
-    }
-    out[j] = static_cast<std::size_t>(raw);
-  }
+  for(int j = 0; j < 3; ++j)
+    out[j] = checked_index(face[j], n, "face", k, "position", j);
   for(int j = 0; j < 3; ++j)
     if(out[j] == out[ccw(j)]) {
       std::ostringstream msg;
@@ -100,23 +104,8 @@ template <class Edge>
 std::pair<std::size_t, std::size_t> read_edge(const Edge& e, std::size_t k, std::size_t n)
 {
   std::size_t out[2];
-  for(int j = 0; j < 2; ++j) {
-    const auto raw = edge_end(e, j);
-    using Index = std::decay_t<decltype(raw)>;
-    static_assert(std::is_integral<Index>::value, "Delaunay_from_prediction: edge ends must be integers");
-    bool out_of_range = false;
-    if constexpr(std::is_signed<Index>::value)
-      out_of_range = raw < 0 || static_cast<unsigned long long>(raw) >= n;
-    else
-      out_of_range = static_cast<unsigned long long>(raw) >= n;
-    if(out_of_range) {
-      std::ostringstream msg;
-      msg << "Delaunay_from_prediction: edge " << k << " has index " << +raw << " (end " << j
-          << "), outside the point range [0, " << n << ")";
-      throw Invalid_prediction(msg.str());
-    }
-    out[j] = static_cast<std::size_t>(raw);
-  }
+  for(int j = 0; j < 2; ++j)
+    out[j] = checked_index(edge_end(e, j), n, "edge", k, "end", j);
   if(out[0] == out[1]) {
     std::ostringstream msg;
     msg << "Delaunay_from_prediction: edge " << k << " joins index " << out[0] << " to itself";

@@ -57,41 +57,24 @@ struct Adjacency
   std::size_t size() const { return offsets.empty() ? 0 : offsets.size() - 1; }
 };
 
-// Completes `g`, whose offsets[v + 1] hold the degree of v, from the edge ends listed in
-// pairs: prefix sums, then each edge written at both ends (prefetched a few edges ahead: the
-// ends come in any order).
-inline void fill_adjacency(Adjacency& g, const std::vector<std::uint32_t>& ends)
+// The adjacency of the points 0..n-1 from edge ends listed in pairs (in range, different):
+// degrees, prefix sums, then each edge written at both ends. (Counting the degrees while
+// reading the caller's edges measured slower than this separate pass.)
+inline Adjacency adjacency_of(const std::vector<std::uint32_t>& ends, std::size_t n)
 {
-  const std::size_t n = g.offsets.size() - 1;
+  Adjacency g;
+  g.offsets.assign(n + 1, 0);
+  for(const std::uint32_t v : ends)
+    ++g.offsets[v + 1];
   for(std::size_t v = 0; v < n; ++v)
     g.offsets[v + 1] += g.offsets[v];
   g.targets.resize(g.offsets[n]);
   std::vector<std::uint32_t> fill(g.offsets.begin(), g.offsets.end() - 1);
-  const std::size_t m = ends.size();
-  for(std::size_t k = 0; k < m; k += 2) {
+  for(std::size_t k = 0; k + 1 < ends.size(); k += 2) {
     const std::uint32_t a = ends[k], b = ends[k + 1];
     g.targets[fill[a]++] = b;
     g.targets[fill[b]++] = a;
   }
-}
-
-// Builds the adjacency of n vertices from `m` edges, `edge(k, a, b)` reading edge k into
-// its two ends (already checked to be in range and different).
-template <class EdgeAt>
-Adjacency make_adjacency(std::size_t n, std::size_t m, EdgeAt edge)
-{
-  Adjacency g;
-  g.offsets.assign(n + 1, 0);
-  std::vector<std::uint32_t> ends(2 * m);
-  for(std::size_t k = 0; k < m; ++k) {
-    std::size_t a, b;
-    edge(k, a, b);
-    ends[2 * k] = std::uint32_t(a);
-    ends[2 * k + 1] = std::uint32_t(b);
-    ++g.offsets[a + 1];
-    ++g.offsets[b + 1];
-  }
-  fill_adjacency(g, ends);
   return g;
 }
 
