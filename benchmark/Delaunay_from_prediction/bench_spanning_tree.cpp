@@ -13,6 +13,12 @@
 //   dt_edges   every edge of the Delaunay triangulation (a graph with cycles)
 //   crossing1  the same with 1% of the points relabelled among themselves: a combinatorial
 //              triangulation whose edges cross (Corollary 3.5, given as its edges)
+//   faces0.1, faces0.3, faces1
+//              the faces of the Delaunay triangulation with 0.1%, 0.3%, 1% of the points
+//              relabelled (self-crossing faces), given to delaunay_from_prediction() with
+//              its default strategy (local repair, or a rebuild in spatial order)
+//   faces1_tree
+//              the same as faces1 with Strategy::spanning_tree (built along the faces' edges)
 // Columns: CGAL's range insert (spatial sort, then insertion), ours, our own from-scratch
 // build (grid order, what the package falls back to), the ratios CGAL / ours, faces visited
 // per located point, walks past their cap, whether the call fell back. Each result is checked
@@ -140,7 +146,8 @@ void shuffle_edges(Edges& edges, Rng& rng)
 int main(int argc, char** argv)
 {
   std::vector<std::string> sizes = {"1e5", "1e6"}, dists = {"uniform", "clustered", "graded"},
-                           cases = {"emst", "wrong1", "wrong10", "random", "dt_edges", "crossing1"};
+                           cases = {"emst",      "wrong1",   "wrong10",  "random", "dt_edges",
+                                    "crossing1", "faces0.1", "faces0.3", "faces1", "faces1_tree"};
   int reps = 3;
   std::string csv_file;
   std::uint64_t seed = 20261127;
@@ -160,7 +167,8 @@ int main(int argc, char** argv)
       seed = std::strtoull(option_value(argc, argv, i).c_str(), nullptr, 10);
     else {
       std::printf("usage: %s [--n 1e5,1e6] [--dists uniform,clustered,graded]\n"
-                  "          [--cases emst,wrong1,wrong10,random,dt_edges,crossing1] [--reps 3] [--csv FILE] [--seed S]\n",
+                  "          [--cases emst,wrong1,wrong10,random,dt_edges,crossing1,faces0.1,faces0.3,faces1,\n"
+                  "                   faces1_tree] [--reps 3] [--csv FILE] [--seed S]\n",
                   argv[0]);
       return a == "--help" || a == "-h" ? 0 : 2;
     }
@@ -168,7 +176,7 @@ int main(int argc, char** argv)
   const bool keep = keep_freed_memory();
   std::printf("# bench_spanning_tree, %s, %s, malloc policy %s, medians of %d\n", local_date_time().c_str(),
               build_description().c_str(), keep ? "keep" : "default", reps);
-  std::printf("%-9s %-9s %-8s | %8s %8s %8s | %6s %6s | %6s %8s %3s %s\n", "dist", "n", "case", "CGAL s", "ours s",
+  std::printf("%-9s %-9s %-11s | %8s %8s %8s | %6s %6s | %6s %8s %3s %s\n", "dist", "n", "case", "CGAL s", "ours s",
               "rebuild", "ratio", "CGAL/rb", "f/pt", "capped", "fb", "check");
   std::FILE* csv = csv_file.empty() ? nullptr : std::fopen(csv_file.c_str(), "w");
   if(csv != nullptr)
@@ -189,6 +197,8 @@ int main(int argc, char** argv)
       Rng rng{salted_seed(0x7ee5, seed, dist, n)};
       for(const std::string& c : cases) {
         Edges prediction;
+        std::vector<Face> faces; // the faces cases
+        const bool faces_case = c.compare(0, 5, "faces") == 0;
         if(c == "emst")
           prediction = emst;
         else if(c == "wrong1")
@@ -198,15 +208,16 @@ int main(int argc, char** argv)
         else if(c == "random")
           for(std::uint32_t k = 1; k < n; ++k)
             prediction.emplace_back(k, std::uint32_t(rng.below(k)));
-        else if(c == "dt_edges" || c == "crossing1") {
-          // crossing1: 1% of the points exchange their labels (a random permutation among
-          // them), so the triangulation's edges at those points cross others.
+        else if(c == "dt_edges" || c == "crossing1" || faces_case) {
+          // crossing1, facesX: 1% (X%) of the points exchange their labels (a random
+          // permutation among them), so the triangulation's edges at those points cross others.
           std::vector<std::uint32_t> label(n);
           std::iota(label.begin(), label.end(), 0u);
-          if(c == "crossing1") {
+          if(c != "dt_edges") {
+            const std::uint64_t per_100000 = c == "faces0.1" ? 100 : c == "faces0.3" ? 300 : 1000;
             std::vector<std::uint32_t> chosen;
             for(std::uint32_t k = 0; k < n; ++k)
-              if(rng.below(100) == 0)
+              if(rng.below(100000) < per_100000)
                 chosen.push_back(k);
             std::vector<std::uint32_t> moved = chosen;
             for(std::size_t k = moved.size(); k > 1; --k)
@@ -214,9 +225,15 @@ int main(int argc, char** argv)
             for(std::size_t k = 0; k < chosen.size(); ++k)
               label[chosen[k]] = moved[k];
           }
-          for(auto e = reference.finite_edges_begin(); e != reference.finite_edges_end(); ++e)
-            prediction.emplace_back(label[e->first->vertex(DTI::ccw(e->second))->info()],
-                                    label[e->first->vertex(DTI::cw(e->second))->info()]);
+          if(faces_case) {
+            for(const Face& f : export_faces(reference))
+              faces.push_back({label[f[0]], label[f[1]], label[f[2]]});
+            shuffle_faces(faces, rng);
+          } else {
+            for(auto e = reference.finite_edges_begin(); e != reference.finite_edges_end(); ++e)
+              prediction.emplace_back(label[e->first->vertex(DTI::ccw(e->second))->info()],
+                                      label[e->first->vertex(DTI::cw(e->second))->info()]);
+          }
         }
         else {
           std::fprintf(stderr, "unknown case %s\n", c.c_str());
@@ -231,8 +248,11 @@ int main(int argc, char** argv)
           t_cgal.push_back(time_cgal(points, sig));
           {
             DT dt;
-            t_ours.push_back(
-                time_call(dt, [&] { stats = DFP::delaunay_from_spanning_graph(points, prediction, dt); }, sig));
+            const DFP::Strategy strategy = c == "faces1_tree" ? DFP::Strategy::spanning_tree : DFP::Strategy::automatic;
+            t_ours.push_back(time_call(dt, [&] {
+              stats = faces_case ? DFP::delaunay_from_prediction(points, faces, dt, DFP::parameters::strategy(strategy))
+                                 : DFP::delaunay_from_spanning_graph(points, prediction, dt);
+            }, sig));
             same = same && sig == cgal_sig;
           }
           {
@@ -244,7 +264,7 @@ int main(int argc, char** argv)
         all_same = all_same && same;
         const double tc = median(t_cgal), to = median(t_ours), tr = median(t_rebuild);
         const double per_point = stats.points_located ? double(stats.faces_visited) / double(stats.points_located) : 0;
-        std::printf("%-9s %-9s %-8s | %8.3f %8.3f %8.3f | %6.2f %6.2f | %6.2f %8zu %3s %s\n", dist.c_str(), size.c_str(),
+        std::printf("%-9s %-9s %-11s | %8.3f %8.3f %8.3f | %6.2f %6.2f | %6.2f %8zu %3s %s\n", dist.c_str(), size.c_str(),
                     c.c_str(), tc, to, tr, tc / to, tc / tr, per_point, stats.walk_fallbacks,
                     stats.fell_back ? "yes" : "no", same ? "same as CGAL" : "DIFFERENT");
         std::fflush(stdout);
@@ -282,7 +302,7 @@ int main(int argc, char** argv)
         }
         all_same = all_same && same;
         const double tc = median(t_cgal), to = median(t_ours);
-        std::printf("%-9s %-9s %-8s | %8.3f %8.3f %8s | %6.2f %6s | %6s %8s %3s %s\n", dist.c_str(), size.c_str(),
+        std::printf("%-9s %-9s %-11s | %8.3f %8.3f %8s | %6.2f %6s | %6s %8s %3s %s\n", dist.c_str(), size.c_str(),
                     "EMST", tc, to, "-", tc / to, "-", "-", "-", "-", same ? "same as CGAL+Kruskal" : "DIFFERENT");
         if(csv != nullptr)
           std::fprintf(csv, "%s,%zu,EMST,%.4f,%.4f,,%.3f,,,,,%d\n", dist.c_str(), n, tc, to, tc / to, int(same));

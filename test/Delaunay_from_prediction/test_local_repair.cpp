@@ -58,8 +58,9 @@ namespace {
 // Strategies
 // ---------------------------------------------------------------------------------------------
 
-enum class Mode { defaults, automatic, carve, t_division, flips, rebuild };
-const Mode all_modes[] = {Mode::defaults, Mode::automatic, Mode::carve, Mode::t_division, Mode::flips, Mode::rebuild};
+enum class Mode { defaults, automatic, carve, t_division, flips, rebuild, spanning_tree };
+const Mode all_modes[] = {Mode::defaults, Mode::automatic, Mode::carve,        Mode::t_division,
+                          Mode::flips,    Mode::rebuild,   Mode::spanning_tree};
 
 const char* name_of(Mode m)
 {
@@ -69,6 +70,7 @@ const char* name_of(Mode m)
   case Mode::carve: return "carve";
   case Mode::t_division: return "t_division";
   case Mode::flips: return "flips";
+  case Mode::spanning_tree: return "spanning_tree";
   default: return "rebuild";
   }
 }
@@ -86,6 +88,7 @@ DFP::Statistics with_strategy(Mode m, const F& body)
   case Mode::carve: return body(P::strategy(DFP::Strategy::carve));
   case Mode::t_division: return body(P::strategy(DFP::Strategy::t_division));
   case Mode::flips: return body(P::strategy(DFP::Strategy::flips));
+  case Mode::spanning_tree: return body(P::strategy(DFP::Strategy::spanning_tree));
   default: return body(P::strategy(DFP::Strategy::rebuild));
   }
 }
@@ -167,7 +170,7 @@ void check_strategy(Mode m, const DFP::Statistics& s, const Expect& e, std::size
     if(e.valid && e.must_repair)
       DFP_CHECK_MSG(!s.fell_back, describe(s));
     DFP_CHECK_MSG(s.faces_carved == 0 && s.holes_refilled == 0, describe(s));
-  } else { // rebuild
+  } else { // rebuild, spanning_tree (make_delaunay: rebuild)
     DFP_CHECK_MSG(s.fell_back, describe(s));
     DFP_CHECK_MSG(s.points_reinserted == n, describe(s) << ", n = " << n);
     DFP_CHECK_MSG(std::string(s.fallback_reason) != "", describe(s));

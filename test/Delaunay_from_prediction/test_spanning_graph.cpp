@@ -10,13 +10,15 @@
 // combinatorial triangulation, disconnected graphs, on
 // random and degenerate points; bad input throws with nothing changed; the statistics show
 // the walks were used (and a random tree detected). Also the preorder forest the engine
-// scans, on random graphs.
+// scans, on random graphs, and the faces entry point on self-crossing triangulations, by
+// default and with Strategy::spanning_tree.
 
 #include <CGAL/Delaunay_from_prediction/spanning_graph.h> // first: the header is self-contained
 
 #include "test_util.h"
 
 #include <CGAL/Delaunay_from_predicted_edges_2.h> // both edge entry points in one unit
+#include <CGAL/Delaunay_from_prediction_2.h>
 
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -337,6 +339,56 @@ void walks_are_used()
   }
 }
 
+// The faces entry point on self-crossing combinatorial triangulations (Corollary 3.5): the
+// Delaunay faces with some points relabelled among themselves. By default they are repaired
+// locally (or rebuilt); with Strategy::spanning_tree, built along a spanning tree of the
+// faces' edges, the walks locating the points. Both equal CGAL's triangulation.
+void faces_with_crossings()
+{
+  CGAL::Random rng(99);
+  using K = CGAL::Epick;
+  const auto points = to_points<K>(uniform_points(30000, rng));
+  const std::size_t n = points.size();
+  const Faces faces = delaunay_faces<K>(points);
+  for(int per_mille : {0, 3, 50}) {
+    std::vector<std::size_t> label(n), chosen;
+    std::iota(label.begin(), label.end(), std::size_t(0));
+    for(std::size_t i = 0; i < n; ++i)
+      if(rng.get_int(0, 1000) < per_mille)
+        chosen.push_back(i);
+    std::vector<std::size_t> moved = chosen;
+    shuffle(moved, rng);
+    for(std::size_t k = 0; k < chosen.size(); ++k)
+      label[chosen[k]] = moved[k];
+    Faces crossing = faces;
+    for(Face& f : crossing)
+      f = {label[f[0]], label[f[1]], label[f[2]]};
+    Scope s(chosen.size(), " of ", n, " points relabelled");
+    {
+      Scope c("default strategy");
+      DT_with_info<K> dt;
+      const DFP::Statistics st = DFP::delaunay_from_prediction(points, crossing, dt);
+      check_is_cgal_delaunay(dt, points);
+      check_statistics(st, crossing, points, dt);
+      if(chosen.empty())
+        DFP_CHECK(st.faces_certified == st.faces_in);
+    }
+    {
+      Scope c("Strategy::spanning_tree");
+      DT_with_info<K> dt;
+      dt.insert(make_point<K>(-50., 7.)); // must be cleared
+      const DFP::Statistics st = DFP::delaunay_from_prediction(
+          points, crossing, dt, DFP::parameters::strategy(DFP::Strategy::spanning_tree));
+      check_is_cgal_delaunay(dt, points);
+      check_statistics(st, crossing, points, dt);
+      DFP_CHECK(st.fell_back);
+      DFP_CHECK_MSG(std::string(st.fallback_reason) == "the spanning_tree strategy was chosen", st.fallback_reason);
+      DFP_CHECK_MSG(st.points_located > n / 2, st.points_located);
+      DFP_CHECK_MSG(st.faces_visited < 6 * st.points_located, st.faces_visited << " faces for " << st.points_located);
+    }
+  }
+}
+
 // Bad input: an end out of range (negative included) or a loop throws Invalid_prediction
 // naming the edge, a non-finite point too, and the triangulation is left as it was.
 void bad_input()
@@ -493,6 +545,7 @@ int main()
     DFP_RUN(t.graphs_on(jittered(grid_points(20, 20, t.rng), 1e-13, t.rng), false));
   }
   DFP_RUN(walks_are_used());
+  DFP_RUN(faces_with_crossings());
   DFP_RUN(bad_input());
   return finish("test_spanning_graph");
 }

@@ -48,7 +48,14 @@ enum class Strategy {
   /// (see the user manual): selectable for comparison.
   t_division,
   /// ignore the prediction and rebuild (for comparisons).
-  rebuild
+  rebuild,
+  /// `delaunay_from_prediction()` only (`make_delaunay()` treats it as `rebuild`): no
+  /// certification or repair; the triangulation is built from scratch along a spanning tree
+  /// of the faces' edges, as `delaunay_from_spanning_graph()` does (Corollaries 3.4 and 3.5
+  /// of the paper: the faces need not be planar; time \f$O((n + D \log n) \log^* n)\f$ in the
+  /// paper's model). Reported as a fallback, as `rebuild` is. Slower than the default on
+  /// every prediction measured (see the user manual): selectable for comparison.
+  spanning_tree
 };
 
 /// \ingroup PkgDelaunayFromPredictionRef

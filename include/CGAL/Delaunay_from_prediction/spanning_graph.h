@@ -105,16 +105,7 @@ Statistics delaunay_from_spanning_graph(const PointRange& points, const EdgeRang
   const std::vector<std::uint32_t> ends = internal::checked_edge_ends(edges, n);
   stats.edges_in = ends.size() / 2;
   dt.clear();
-  if(internal::edges_look_random(point_at, n, ends, 0x5eed7ee5ull)) {
-    std::vector<std::size_t> indices(n);
-    for(std::size_t i = 0; i < n; ++i)
-      indices[i] = i;
-    internal::insert_points(dt, point_at, indices, stats);
-    stats.fell_back = true;
-    stats.fallback_reason = "the graph's edges are far longer than the spacing of the points";
-    return stats;
-  }
-  internal::insert_along_spanning_forest(dt, point_at, n, internal::adjacency_of(ends, n), stats);
+  internal::build_along_edges(dt, point_at, n, ends, stats);
   return stats;
 }
 

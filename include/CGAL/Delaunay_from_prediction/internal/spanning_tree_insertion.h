@@ -282,11 +282,6 @@ private:
   std::vector<Vertex_handle> fine_, coarse_;
 };
 
-// Inserts the points (random access, n of them) into the empty Delaunay triangulation `dt`
-// along the spanning forest of `graph`, setting info() to the point index (the smallest for
-// duplicates). Fills the walk counters of `stats`, `points_reinserted` and
-// `duplicate_points`; sets `fell_back` when the forest did not help and the remaining
-// points went to the grid-order insertion.
 // Whether the edges (ends listed in pairs) are much longer than the spacing of the points,
 // judged on a sample of 255 edges: the median length above 32 times the side of the area
 // per point in the bounding box. A random tree is (its edges span a fair part of the box), a
@@ -323,6 +318,11 @@ bool edges_look_random(PointIterator points, std::size_t n, const std::vector<st
   return squared_lengths[127] > 32 * 32 * area_per_point;
 }
 
+// Inserts the points (random access, n of them) into the empty Delaunay triangulation `dt`
+// along the spanning forest of `graph`, setting info() to the point index (the smallest for
+// duplicates). Fills the walk counters of `stats`, `points_reinserted` and
+// `duplicate_points`; sets `fell_back` when the forest did not help and the remaining
+// points went to the grid-order insertion.
 template <class DT, class PointIterator>
 void insert_along_spanning_forest(DT& dt, PointIterator points, std::size_t n, const Adjacency& graph,
                                   Statistics& stats, std::uint64_t seed = 0x5eed7ee5ull)
@@ -435,6 +435,27 @@ void insert_along_spanning_forest(DT& dt, PointIterator points, std::size_t n, c
       }
     }
   }
+}
+
+// Builds DT(points) into the empty `dt` from a graph on the points, given by its edge ends
+// in pairs (in range, different; fewer than no_rank points): along its spanning forest, or in
+// grid order when its edges are too long to help, with `fell_back` set.
+// The engine's one entry, for delaunay_from_spanning_graph() and for
+// delaunay_from_prediction() with Strategy::spanning_tree.
+template <class DT, class PointIterator>
+void build_along_edges(DT& dt, PointIterator points, std::size_t n, const std::vector<std::uint32_t>& ends,
+                       Statistics& stats)
+{
+  if(edges_look_random(points, n, ends, 0x5eed7ee5ull)) {
+    std::vector<std::size_t> indices(n);
+    for(std::size_t i = 0; i < n; ++i)
+      indices[i] = i;
+    insert_points(dt, points, indices, stats);
+    stats.fell_back = true;
+    stats.fallback_reason = "the graph's edges are far longer than the spacing of the points";
+    return;
+  }
+  insert_along_spanning_forest(dt, points, n, adjacency_of(ends, n), stats);
 }
 
 } // namespace internal
