@@ -28,10 +28,17 @@ namespace internal {
 // A grid cell with more points than this (the grids aim at four) is sorted again.
 constexpr std::size_t crowded_cell = 64;
 
-// Sorts the indices in [first, last) along a serpentine grid over their own bounding box,
-// about four points a cell, and crowded cells again, `depth` levels deep at most.
+// Writes to `out` the indices in [first, last) sorted along a serpentine grid over the
+// bounding box of their points, about four points a cell, rows alternately left to right and
+// right to left, so that consecutive indices name nearby points; then sorts each crowded cell
+// the same way over its own box, up to depth 6. Cells far above their share (clusters, a density varying by orders of
+// magnitude) need it: a build of 1e6 points of density varying 10^8 times across the square
+// (x = u^4, y = v^4) took 1.6 times CGAL's time without, 0.8 times with. With
+// `biased_rounds` (depth 0 only), the points are first dealt into rounds (round r with
+// probability 7/8^(r+1), fixed seed), listed from the sparsest, each round in grid order.
 template <class Index, class PointAt>
-void sort_crowded_cell(Index* first, Index* last, PointAt point_at, int depth)
+void sort_serpentine(const Index* first, const Index* last, Index* out, PointAt point_at, bool biased_rounds,
+                     int depth)
 {
   const std::size_t m = std::size_t(last - first);
   double xmin = CGAL::to_double(point_at(*first).x()), xmax = xmin;
@@ -43,59 +50,14 @@ void sort_crowded_cell(Index* first, Index* last, PointAt point_at, int depth)
     ymin = (std::min)(ymin, y);
     ymax = (std::max)(ymax, y);
   }
-  const std::size_t side = (std::max)(std::size_t(2), std::size_t(std::sqrt(double(m) / 4)));
-  const double sx = xmax > xmin ? double(side) / (xmax - xmin) : 0;
-  const double sy = ymax > ymin ? double(side) / (ymax - ymin) : 0;
-  const double last_cell = double(side - 1);
-  std::vector<std::uint32_t> key(m), start(side * side + 1, 0);
-  for(std::size_t k = 0; k < m; ++k) {
-    const auto& p = point_at(first[k]);
-    const double fx = (CGAL::to_double(p.x()) - xmin) * sx, fy = (CGAL::to_double(p.y()) - ymin) * sy;
-    const std::size_t cx = std::size_t(fx > 0 ? (std::min)(fx, last_cell) : 0);
-    const std::size_t cy = std::size_t(fy > 0 ? (std::min)(fy, last_cell) : 0);
-    key[k] = std::uint32_t(cy * side + ((cy & 1) ? side - 1 - cx : cx));
-    ++start[key[k] + 1];
-  }
-  for(std::size_t c = 1; c < start.size(); ++c)
-    start[c] += start[c - 1];
-  std::vector<Index> sorted(m);
-  for(std::size_t k = 0; k < m; ++k)
-    sorted[start[key[k]]++] = first[k];
-  std::copy(sorted.begin(), sorted.end(), first);
-  if(depth >= 6)
-    return;
-  for(std::size_t c = 0, begin = 0; c + 1 < start.size(); begin = start[c], ++c)
-    if(start[c] - begin > crowded_cell && start[c] - begin < m) // m: all equal points, no progress
-      sort_crowded_cell(first + begin, first + start[c], point_at, depth + 1);
-}
-
-// Sorts `indices` (of points) along a serpentine grid over their bounding box, about four
-// points per cell, rows alternately left to right and right to left, so that consecutive
-// indices name nearby points. With `biased_rounds`, the points are first dealt into rounds
-// (round r with probability 7/8^(r+1), fixed seed) listed from the sparsest, each round in
-// grid order: the biased randomized insertion order (BRIO) that keeps CGAL's incremental
-// insertion fast, at a tenth of the cost of spatial_sort's median splits.
-template <class Index, class PointAt>
-void sort_along_grid(std::vector<Index>& indices, PointAt point_at, bool biased_rounds)
-{
-  const std::size_t m = indices.size();
-  if(m < 2)
-    return;
-  double xmin = CGAL::to_double(point_at(indices[0]).x()), xmax = xmin;
-  double ymin = CGAL::to_double(point_at(indices[0]).y()), ymax = ymin;
-  for(const Index i : indices) {
-    const double x = CGAL::to_double(point_at(i).x()), y = CGAL::to_double(point_at(i).y());
-    xmin = (std::min)(xmin, x);
-    xmax = (std::max)(xmax, x);
-    ymin = (std::min)(ymin, y);
-    ymax = (std::max)(ymax, y);
-  }
-  constexpr std::uint32_t rounds = 8;
-  const std::size_t side = (std::min)(std::size_t(1) << 12,
-                                      (std::max)(std::size_t(1), std::size_t(std::sqrt(double(m) / 4))));
+  const std::size_t fit = std::size_t(std::sqrt(double(m) / 4));
+  const std::size_t side = depth == 0 ? (std::min)(std::size_t(1) << 12, (std::max)(std::size_t(1), fit))
+                                      : (std::max)(std::size_t(2), fit);
   const std::size_t cells = side * side;
   const double sx = xmax > xmin ? double(side) / (xmax - xmin) : 0;
   const double sy = ymax > ymin ? double(side) / (ymax - ymin) : 0;
+  const double last_cell = double(side - 1); // also catches inf (tiny boxes); NaN gives 0
+  constexpr std::uint32_t rounds = 8;
   std::uint64_t state = 0x5eed5eed5eedull;
   auto random = [&state] { // splitmix64
     std::uint64_t z = (state += 0x9E3779B97F4A7C15ull);
@@ -103,13 +65,12 @@ void sort_along_grid(std::vector<Index>& indices, PointAt point_at, bool biased_
     z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
     return z ^ (z >> 31);
   };
-  std::vector<std::uint32_t> key(m);
-  std::vector<std::uint32_t> start((biased_rounds ? rounds : 1) * cells + 1, 0);
+  std::vector<std::uint32_t> key(m), start((biased_rounds ? rounds : 1) * cells + 1, 0);
   for(std::size_t k = 0; k < m; ++k) {
-    const auto& p = point_at(indices[k]);
+    const auto& p = point_at(first[k]);
     const double fx = (CGAL::to_double(p.x()) - xmin) * sx, fy = (CGAL::to_double(p.y()) - ymin) * sy;
-    const std::size_t cx = (std::min)(side - 1, std::size_t(fx > 0 ? fx : 0));
-    const std::size_t cy = (std::min)(side - 1, std::size_t(fy > 0 ? fy : 0));
+    const std::size_t cx = std::size_t(fx > 0 ? (std::min)(fx, last_cell) : 0);
+    const std::size_t cy = std::size_t(fy > 0 ? (std::min)(fy, last_cell) : 0);
     std::uint32_t cell = std::uint32_t(cy * side + ((cy & 1) ? side - 1 - cx : cx));
     if(biased_rounds) {
       std::uint32_t round = 0;
@@ -122,17 +83,29 @@ void sort_along_grid(std::vector<Index>& indices, PointAt point_at, bool biased_
   }
   for(std::size_t c = 1; c < start.size(); ++c)
     start[c] += start[c - 1];
-  std::vector<Index> sorted(m);
   for(std::size_t k = 0; k < m; ++k)
-    sorted[start[key[k]]++] = indices[k];
+    out[start[key[k]]++] = first[k];
+  if(depth >= 6)
+    return;
+  std::vector<Index> crowded;
+  for(std::size_t c = 0, begin = 0; c + 1 < start.size(); begin = start[c], ++c)
+    if(start[c] - begin > crowded_cell && start[c] - begin < m) { // m: all equal points, no progress
+      crowded.assign(out + begin, out + start[c]);
+      sort_serpentine(crowded.data(), crowded.data() + crowded.size(), out + begin, point_at, false, depth + 1);
+    }
+}
+
+// Sorts `indices` (of points) along the serpentine grid (sort_serpentine()). With
+// `biased_rounds`, in rounds: the biased randomized insertion order (BRIO) that keeps
+// incremental insertion fast, at a tenth of the cost of spatial_sort's median splits.
+template <class Index, class PointAt>
+void sort_along_grid(std::vector<Index>& indices, PointAt point_at, bool biased_rounds)
+{
+  if(indices.size() < 2)
+    return;
+  std::vector<Index> sorted(indices.size());
+  sort_serpentine(indices.data(), indices.data() + indices.size(), sorted.data(), point_at, biased_rounds, 0);
   indices.swap(sorted);
-  // Cells far above their share (clusters, a density varying by orders of magnitude) are
-  // sorted again along a grid of their own: without it, a build of 1e6 points of density
-  // varying 10^8 times across the square (x = u^4, y = v^4) took 1.6 times CGAL's time; 0.8
-  // times with it.
-  for(std::size_t c = 0, first = 0; c + 1 < start.size(); first = start[c], ++c)
-    if(start[c] - first > crowded_cell)
-      sort_crowded_cell(indices.data() + first, indices.data() + start[c], point_at, 1);
 }
 
 class Spatial_order
