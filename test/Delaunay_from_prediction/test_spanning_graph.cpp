@@ -372,6 +372,10 @@ void faces_with_crossings()
       check_statistics(st, crossing, points, dt);
       if(chosen.empty())
         DFP_CHECK(st.faces_certified == st.faces_in);
+      if(per_mille == 3) // repaired locally, not rebuilt
+        DFP_CHECK_MSG(!st.fell_back && st.faces_carved > 0 && st.points_reinserted >= chosen.size(),
+                      st.fallback_reason << ", " << st.faces_carved << " carved, " << st.points_reinserted
+                                         << " reinserted");
     }
     {
       Scope c("Strategy::spanning_tree");
