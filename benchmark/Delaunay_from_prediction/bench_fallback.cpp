@@ -19,7 +19,6 @@
 #include "benchmark_util.h"
 
 #include <cmath>
-#include <numeric>
 
 using namespace dfp_bench;
 
@@ -80,16 +79,11 @@ int main(int argc, char** argv)
           p = Point(x, p.y() + s * rng.normal());
         }
       } else if(prediction == "relabelled 1%") {
-        std::vector<std::uint32_t> label(n), chosen;
-        std::iota(label.begin(), label.end(), 0u);
+        std::vector<std::uint32_t> chosen;
         for(std::uint32_t k = 0; k < n; ++k)
           if(rng.below(100) == 0)
             chosen.push_back(k);
-        std::vector<std::uint32_t> moved = chosen;
-        for(std::size_t k = moved.size(); k > 1; --k)
-          std::swap(moved[k - 1], moved[rng.below(k)]);
-        for(std::size_t k = 0; k < chosen.size(); ++k)
-          label[chosen[k]] = moved[k];
+        const std::vector<std::uint32_t> label = permuted_among(n, chosen, rng);
         for(Face& f : faces)
           f = {label[f[0]], label[f[1]], label[f[2]]};
       } else {

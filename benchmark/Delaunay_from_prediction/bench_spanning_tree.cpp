@@ -211,20 +211,14 @@ int main(int argc, char** argv)
         else if(c == "dt_edges" || c == "crossing1" || faces_case) {
           // crossing1, facesX: 1% (X%) of the points exchange their labels (a random
           // permutation among them), so the triangulation's edges at those points cross others.
-          std::vector<std::uint32_t> label(n);
-          std::iota(label.begin(), label.end(), 0u);
+          std::vector<std::uint32_t> chosen;
           if(c != "dt_edges") {
             const std::uint64_t per_100000 = c == "faces0.1" ? 100 : c == "faces0.3" ? 300 : 1000;
-            std::vector<std::uint32_t> chosen;
             for(std::uint32_t k = 0; k < n; ++k)
               if(rng.below(100000) < per_100000)
                 chosen.push_back(k);
-            std::vector<std::uint32_t> moved = chosen;
-            for(std::size_t k = moved.size(); k > 1; --k)
-              std::swap(moved[k - 1], moved[rng.below(k)]);
-            for(std::size_t k = 0; k < chosen.size(); ++k)
-              label[chosen[k]] = moved[k];
           }
+          const std::vector<std::uint32_t> label = permuted_among(n, chosen, rng);
           if(faces_case) {
             for(const Face& f : export_faces(reference))
               faces.push_back({label[f[0]], label[f[1]], label[f[2]]});

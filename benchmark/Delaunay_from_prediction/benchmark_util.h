@@ -97,6 +97,21 @@ inline void shuffle_faces(std::vector<Face>& faces, Rng& rng)
   }
 }
 
+// Labels 0..n-1 with the points of `chosen` permuted among themselves at random: faces or
+// edges relabelled with it are drawn with crossings at those points (a combinatorial
+// triangulation with self-crossings, the paper's Corollary 3.5).
+inline std::vector<std::uint32_t> permuted_among(std::size_t n, const std::vector<std::uint32_t>& chosen, Rng& rng)
+{
+  std::vector<std::uint32_t> label(n);
+  for(std::size_t i = 0; i < n; ++i)
+    label[i] = std::uint32_t(i);
+  std::vector<std::uint32_t> moved = chosen;
+  shuffle(moved, rng);
+  for(std::size_t k = 0; k < chosen.size(); ++k)
+    label[chosen[k]] = moved[k];
+  return label;
+}
+
 // ---------------------------------------------------------------------------------------------
 // Inputs.
 inline std::vector<Point> uniform_points(std::size_t n, std::uint64_t seed)
