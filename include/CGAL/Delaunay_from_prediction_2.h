@@ -405,10 +405,11 @@ Statistics delaunay_from_prediction(const PointRange& points, const FaceRange& f
     stats.faces_certified = 0;
     stats.points_reinserted = 0;
     result.tds().clear(); // release the partial import before building anew
+    const std::vector<std::uint32_t> grid_order = std::move(imported.points_in_grid_order);
     imported = internal::Imported_prediction<DT>();
     DT fresh(gt);
     if(strategy != Strategy::spanning_tree || n >= std::size_t(internal::no_rank)) {
-      internal::build_from_scratch(fresh, point_at, n, stats);
+      internal::build_from_scratch(fresh, point_at, n, stats, grid_order);
     } else {
       // Two edges of each face keep its three corners connected.
       std::vector<std::uint32_t> ends;

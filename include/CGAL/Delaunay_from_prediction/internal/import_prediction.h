@@ -128,6 +128,9 @@ struct Imported_prediction
   std::size_t vertices_used = 0;
   std::size_t edges_tested = 0;
   bool reordered = false;        // whether the spatial reordering ran
+  // The caller's point indices in the grid order of the reordering, when it renumbered the
+  // points (else empty): a rebuild after the import starts from it.
+  std::vector<std::uint32_t> points_in_grid_order;
   const char* failure = nullptr; // why the faces are not a triangulation; null if they are
 };
 
@@ -383,6 +386,7 @@ public:
       for(std::uint32_t v = 0; v < n; ++v)
         sorted_points.push_back(points[order.old_index(v)]);
       importer.build(sorted_points.begin(), triples, order);
+      out.points_in_grid_order = order.take_old_indices();
     } else {
       importer.build(points, triples, order);
     }

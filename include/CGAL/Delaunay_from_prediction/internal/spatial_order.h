@@ -19,6 +19,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -27,6 +28,20 @@ namespace internal {
 
 // A grid cell with more points than this (the grids aim at four) is sorted again.
 constexpr std::size_t crowded_cell = 64;
+
+// The rounds of a biased randomized insertion order (BRIO): the next point is in round r with
+// probability 7/8^(r+1), the last round taking the rest; `state` is a splitmix64 state.
+constexpr std::uint32_t brio_rounds = 8;
+inline std::uint32_t brio_round(std::uint64_t& state)
+{
+  std::uint64_t z = (state += 0x9E3779B97F4A7C15ull);
+  z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+  z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+  std::uint32_t round = 0;
+  for(std::uint64_t bits = z ^ (z >> 31); round + 1 < brio_rounds && (bits & 7) == 0; bits >>= 3)
+    ++round;
+  return round;
+}
 
 // Writes to `out` the indices in [first, last) sorted along a serpentine grid over the
 // bounding box of their points, about four points a cell, rows alternately left to right and
@@ -57,27 +72,16 @@ void sort_serpentine(const Index* first, const Index* last, Index* out, PointAt 
   const double sx = xmax > xmin ? double(side) / (xmax - xmin) : 0;
   const double sy = ymax > ymin ? double(side) / (ymax - ymin) : 0;
   const double last_cell = double(side - 1); // also catches inf (tiny boxes); NaN gives 0
-  constexpr std::uint32_t rounds = 8;
   std::uint64_t state = 0x5eed5eed5eedull;
-  auto random = [&state] { // splitmix64
-    std::uint64_t z = (state += 0x9E3779B97F4A7C15ull);
-    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-    return z ^ (z >> 31);
-  };
-  std::vector<std::uint32_t> key(m), start((biased_rounds ? rounds : 1) * cells + 1, 0);
+  std::vector<std::uint32_t> key(m), start((biased_rounds ? brio_rounds : 1) * cells + 1, 0);
   for(std::size_t k = 0; k < m; ++k) {
     const auto& p = point_at(first[k]);
     const double fx = (CGAL::to_double(p.x()) - xmin) * sx, fy = (CGAL::to_double(p.y()) - ymin) * sy;
     const std::size_t cx = std::size_t(fx > 0 ? (std::min)(fx, last_cell) : 0);
     const std::size_t cy = std::size_t(fy > 0 ? (std::min)(fy, last_cell) : 0);
     std::uint32_t cell = std::uint32_t(cy * side + ((cy & 1) ? side - 1 - cx : cx));
-    if(biased_rounds) {
-      std::uint32_t round = 0;
-      for(std::uint64_t bits = random(); round + 1 < rounds && (bits & 7) == 0; bits >>= 3)
-        ++round;
-      cell += std::uint32_t((rounds - 1 - round) * cells);
-    }
+    if(biased_rounds)
+      cell += std::uint32_t((brio_rounds - 1 - brio_round(state)) * cells);
     key[k] = cell;
     ++start[cell + 1];
   }
@@ -108,6 +112,27 @@ void sort_along_grid(std::vector<Index>& indices, PointAt point_at, bool biased_
   indices.swap(sorted);
 }
 
+// Deals indices listed in a spatial order into the rounds of a biased randomized insertion
+// order, the sparsest round first, keeping their order within each round: the order
+// sort_along_grid() gives with `biased_rounds`, from a list already in grid order.
+template <class Index>
+void deal_into_rounds(std::vector<Index>& indices)
+{
+  std::uint64_t state = 0x5eed5eed5eedull;
+  std::vector<std::uint8_t> round(indices.size());
+  std::size_t start[brio_rounds + 1] = {};
+  for(std::size_t k = 0; k < indices.size(); ++k) {
+    round[k] = std::uint8_t(brio_rounds - 1 - brio_round(state));
+    ++start[round[k] + 1];
+  }
+  for(std::uint32_t r = 1; r <= brio_rounds; ++r)
+    start[r] += start[r - 1];
+  std::vector<Index> dealt(indices.size());
+  for(std::size_t k = 0; k < indices.size(); ++k)
+    dealt[start[round[k]]++] = indices[k];
+  indices.swap(dealt);
+}
+
 class Spatial_order
 {
 public:
@@ -133,6 +158,8 @@ public:
   bool renumbered() const { return !old_of_.empty(); }
   bool faces_sorted() const { return faces_sorted_; }
   std::uint32_t old_index(std::uint32_t v) const { return old_of_.empty() ? v : old_of_[v]; }
+  // The caller's indices in the new order (empty if not renumbered); the order is spent.
+  std::vector<std::uint32_t> take_old_indices() { return std::move(old_of_); }
 
 private:
   static constexpr std::size_t samples = 255;
