@@ -38,7 +38,6 @@
 #include <cmath>
 #include <iostream>
 #include <map>
-#include <numeric>
 
 using namespace dfp_bench;
 
@@ -74,26 +73,7 @@ std::vector<Point> make_points(const std::string& dist, std::size_t n, std::uint
   return points;
 }
 
-struct Union_find
-{
-  std::vector<std::uint32_t> parent;
-  explicit Union_find(std::size_t n) : parent(n) { std::iota(parent.begin(), parent.end(), 0u); }
-  std::uint32_t find(std::uint32_t x)
-  {
-    while(parent[x] != x)
-      x = parent[x] = parent[parent[x]];
-    return x;
-  }
-  bool join(std::uint32_t a, std::uint32_t b)
-  {
-    a = find(a);
-    b = find(b);
-    if(a == b)
-      return false;
-    parent[a] = b;
-    return true;
-  }
-};
+using DFP::internal::Union_find;
 
 // Kruskal over the edges of `dt` (info = point index), as a user would write it: edges
 // sorted by squared length in double, then by index pair (exact on these inputs, which have

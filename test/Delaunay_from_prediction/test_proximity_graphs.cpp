@@ -72,43 +72,31 @@ struct Proximity_test
       const auto c = cmp(points[a.first], points[a.second], points[b.first], points[b.second]);
       return c == CGAL::SMALLER || (c == CGAL::EQUAL && a < b);
     });
-    std::vector<std::size_t> parent(points.size());
-    std::iota(parent.begin(), parent.end(), std::size_t(0));
-    auto find = [&](std::size_t x) {
-      while(parent[x] != x)
-        x = parent[x];
-      return x;
-    };
+    DFP::internal::Union_find sets(points.size());
     Edges tree;
     for(std::size_t i = 0; i < points.size(); ++i)
-      if(rep[i] != i) {
+      if(rep[i] != i && sets.join(i, rep[i]))
         tree.emplace_back(rep[i], i);
-        parent[i] = rep[i];
-      }
-    for(const Edge& e : pairs) {
-      const std::size_t a = find(e.first), b = find(e.second);
-      if(a != b) {
-        parent[a] = b;
+    for(const Edge& e : pairs)
+      if(sets.join(e.first, e.second))
         tree.push_back(e);
-      }
-    }
     std::sort(tree.begin(), tree.end());
     return tree;
   }
 
-  // Every other point tested against the definition.
-  Edges reference_rng(const Points& points, bool all_pairs)
+  // The candidate pairs p q that no point r removes, every point tested against the
+  // definition (removes(p, q, r)).
+  template <class Removes>
+  Edges reference_graph(const Points& points, bool all_pairs, Removes removes)
   {
     const auto rep = representatives(points);
-    auto cmp = kernel.compare_distance_2_object();
     Edges graph;
     for(const Edge& e : candidates(points, rep, all_pairs)) {
       const Point& p = points[e.first];
       const Point& q = points[e.second];
       bool empty = true;
       for(std::size_t r = 0; r < points.size() && empty; ++r)
-        if(cmp(p, points[r], p, q) == CGAL::SMALLER && cmp(q, points[r], q, p) == CGAL::SMALLER)
-          empty = false;
+        empty = !removes(p, q, points[r]);
       if(empty)
         graph.push_back(e);
     }
@@ -117,25 +105,21 @@ struct Proximity_test
     return graph;
   }
 
+  Edges reference_rng(const Points& points, bool all_pairs)
+  {
+    auto cmp = kernel.compare_distance_2_object();
+    return reference_graph(points, all_pairs, [&](const Point& p, const Point& q, const Point& r) {
+      return cmp(p, r, p, q) == CGAL::SMALLER && cmp(q, r, q, p) == CGAL::SMALLER;
+    });
+  }
+
   Edges reference_gabriel(const Points& points, bool all_pairs)
   {
-    const auto rep = representatives(points);
     auto angle = kernel.angle_2_object();
     auto equal = kernel.equal_2_object();
-    Edges graph;
-    for(const Edge& e : candidates(points, rep, all_pairs)) {
-      const Point& p = points[e.first];
-      const Point& q = points[e.second];
-      bool empty = true;
-      for(std::size_t r = 0; r < points.size() && empty; ++r)
-        if(!equal(points[r], p) && !equal(points[r], q) && angle(p, points[r], q) != CGAL::ACUTE)
-          empty = false;
-      if(empty)
-        graph.push_back(e);
-    }
-    std::sort(graph.begin(), graph.end());
-    graph.erase(std::unique(graph.begin(), graph.end()), graph.end());
-    return graph;
+    return reference_graph(points, all_pairs, [&](const Point& p, const Point& q, const Point& r) {
+      return !equal(r, p) && !equal(r, q) && angle(p, r, q) != CGAL::ACUTE;
+    });
   }
 
   template <class EdgeRange>

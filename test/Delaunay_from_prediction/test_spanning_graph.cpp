@@ -19,6 +19,7 @@
 
 #include <CGAL/Delaunay_from_predicted_edges_2.h> // both edge entry points in one unit
 #include <CGAL/Delaunay_from_prediction_2.h>
+#include <CGAL/Delaunay_from_prediction/internal/union_find.h>
 
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -44,26 +45,7 @@ Edges delaunay_edges(const std::vector<typename K::Point_2>& points)
   return edges;
 }
 
-struct Union_find
-{
-  std::vector<std::size_t> parent;
-  explicit Union_find(std::size_t n) : parent(n) { std::iota(parent.begin(), parent.end(), std::size_t(0)); }
-  std::size_t find(std::size_t x)
-  {
-    while(parent[x] != x)
-      x = parent[x] = parent[parent[x]];
-    return x;
-  }
-  bool join(std::size_t a, std::size_t b)
-  {
-    a = find(a);
-    b = find(b);
-    if(a == b)
-      return false;
-    parent[a] = b;
-    return true;
-  }
-};
+using DFP::internal::Union_find;
 
 // A minimum spanning tree of the points (Kruskal on CGAL's Delaunay edges, lengths in
 // double: the tests only need a tree of Delaunay edges); duplicates joined to one copy.
@@ -120,17 +102,6 @@ inline Edges star(std::size_t n, std::size_t centre)
     if(i != centre)
       edges.emplace_back(i, centre);
   return edges;
-}
-
-inline Edges random_path(std::size_t n, CGAL::Random& rng)
-{
-  std::vector<std::size_t> order(n);
-  std::iota(order.begin(), order.end(), std::size_t(0));
-  shuffle(order, rng);
-  Edges path;
-  for(std::size_t k = 1; k < n; ++k)
-    path.emplace_back(order[k - 1], order[k]);
-  return path;
 }
 
 template <class K>
@@ -207,15 +178,11 @@ struct Spanning_graph_test
       // A combinatorial triangulation whose edges cross (Corollary 3.5): the Delaunay edges
       // with 5% of the points relabelled among themselves.
       Scope s("self-crossing triangulation");
-      std::vector<std::size_t> label(n), chosen;
-      std::iota(label.begin(), label.end(), std::size_t(0));
+      std::vector<std::size_t> chosen;
       for(std::size_t i = 0; i < n; ++i)
         if(rng.get_int(0, 20) == 0)
           chosen.push_back(i);
-      std::vector<std::size_t> moved = chosen;
-      shuffle(moved, rng);
-      for(std::size_t k = 0; k < chosen.size(); ++k)
-        label[chosen[k]] = moved[k];
+      const std::vector<std::size_t> label = permuted_among(n, chosen, rng);
       Edges edges;
       for(const Edge& e : delaunay_edges<K>(points))
         edges.emplace_back(label[e.first], label[e.second]);
@@ -351,15 +318,11 @@ void faces_with_crossings()
   const std::size_t n = points.size();
   const Faces faces = delaunay_faces<K>(points);
   for(int per_mille : {0, 3, 50}) {
-    std::vector<std::size_t> label(n), chosen;
-    std::iota(label.begin(), label.end(), std::size_t(0));
+    std::vector<std::size_t> chosen;
     for(std::size_t i = 0; i < n; ++i)
       if(rng.get_int(0, 1000) < per_mille)
         chosen.push_back(i);
-    std::vector<std::size_t> moved = chosen;
-    shuffle(moved, rng);
-    for(std::size_t k = 0; k < chosen.size(); ++k)
-      label[chosen[k]] = moved[k];
+    const std::vector<std::size_t> label = permuted_among(n, chosen, rng);
     Faces crossing = faces;
     for(Face& f : crossing)
       f = {label[f[0]], label[f[1]], label[f[2]]};

@@ -267,6 +267,34 @@ void shuffle(std::vector<T>& v, CGAL::Random& rng)
     std::swap(v[i - 1], v[std::size_t(rng.get_int(0, int(i)))]);
 }
 
+// Labels 0..n-1 with the points of `chosen` permuted among themselves at random: faces or
+// edges relabelled with it cross each other at those points (Corollary 3.5).
+inline std::vector<std::size_t> permuted_among(std::size_t n, const std::vector<std::size_t>& chosen,
+                                               CGAL::Random& rng)
+{
+  std::vector<std::size_t> label(n);
+  for(std::size_t i = 0; i < n; ++i)
+    label[i] = i;
+  std::vector<std::size_t> moved = chosen;
+  shuffle(moved, rng);
+  for(std::size_t k = 0; k < chosen.size(); ++k)
+    label[chosen[k]] = moved[k];
+  return label;
+}
+
+// A path through the points 0..n-1 in random order, as index pairs.
+inline std::vector<std::pair<std::size_t, std::size_t>> random_path(std::size_t n, CGAL::Random& rng)
+{
+  std::vector<std::size_t> order(n);
+  for(std::size_t i = 0; i < n; ++i)
+    order[i] = i;
+  shuffle(order, rng);
+  std::vector<std::pair<std::size_t, std::size_t>> path;
+  for(std::size_t k = 1; k < n; ++k)
+    path.emplace_back(order[k - 1], order[k]);
+  return path;
+}
+
 inline XYs uniform_points(std::size_t n, CGAL::Random& rng, double lo = 0., double hi = 1.)
 {
   XYs xy(n);

@@ -13,6 +13,7 @@
 #define CGAL_DELAUNAY_FROM_PREDICTION_PROXIMITY_GRAPHS_H
 
 #include <CGAL/Delaunay_from_prediction/spanning_graph.h>
+#include <CGAL/Delaunay_from_prediction/internal/union_find.h>
 
 #include <CGAL/Delaunay_triangulation_2.h>
 #include <CGAL/FPU.h>
@@ -179,27 +180,13 @@ OutputIterator euclidean_minimum_spanning_tree_from_prediction(const PointRange&
   });
   internal::sort_by_exact_length(candidates, point_at, del.dt.geom_traits());
   // Kruskal's algorithm; duplicates first (zero length, joined to their representative).
-  std::vector<std::size_t> parent(n);
-  std::iota(parent.begin(), parent.end(), std::size_t(0));
-  auto find = [&](std::size_t x) {
-    while(parent[x] != x) {
-      parent[x] = parent[parent[x]];
-      x = parent[x];
-    }
-    return x;
-  };
+  internal::Union_find sets(n);
   for(std::size_t i = 0; i < n; ++i)
-    if(del.representative[i] != i) {
-      parent[i] = del.representative[i];
+    if(del.representative[i] != i && sets.join(i, del.representative[i]))
       tree.emplace_back(del.representative[i], i);
-    }
-  for(const auto& e : candidates) {
-    const std::size_t a = find(e.first), b = find(e.second);
-    if(a != b) {
-      parent[a] = b;
+  for(const auto& e : candidates)
+    if(sets.join(e.first, e.second))
       tree.push_back(e);
-    }
-  }
   return internal::write_sorted(tree, out);
 }
 
