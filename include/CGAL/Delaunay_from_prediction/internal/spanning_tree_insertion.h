@@ -230,22 +230,24 @@ public:
   {
     if(n == 0)
       return;
-    xmin_ = xmax_ = CGAL::to_double(point_at(0).x());
-    ymin_ = ymax_ = CGAL::to_double(point_at(0).y());
+    double xmin = CGAL::to_double(point_at(0).x()), xmax = xmin;
+    double ymin = CGAL::to_double(point_at(0).y()), ymax = ymin;
     for(std::size_t k = 1; k < n; ++k) {
       const double x = CGAL::to_double(point_at(k).x()), y = CGAL::to_double(point_at(k).y());
-      xmin_ = (std::min)(xmin_, x);
-      xmax_ = (std::max)(xmax_, x);
-      ymin_ = (std::min)(ymin_, y);
-      ymax_ = (std::max)(ymax_, y);
+      xmin = (std::min)(xmin, x);
+      xmax = (std::max)(xmax, x);
+      ymin = (std::min)(ymin, y);
+      ymax = (std::max)(ymax, y);
     }
-    // Coarse cells are 8 x 8 fine cells.
-    coarse_side_ = (std::max)(std::size_t(1), std::size_t(std::sqrt(double(n) / 256)));
-    fine_side_ = 8 * coarse_side_;
-    sx_ = xmax_ > xmin_ ? double(fine_side_) / (xmax_ - xmin_) : 0;
-    sy_ = ymax_ > ymin_ ? double(fine_side_) / (ymax_ - ymin_) : 0;
-    fine_.assign(fine_side_ * fine_side_, Vertex_handle());
-    coarse_.assign(coarse_side_ * coarse_side_, Vertex_handle());
+    set_up(n, xmin, xmax, ymin, ymax);
+  }
+
+  // A grid for n points in the box [xmin, xmax] x [ymin, ymax] (points outside it fall in
+  // the border cells).
+  Vertex_grid(std::size_t n, double xmin, double xmax, double ymin, double ymax)
+  {
+    if(n != 0)
+      set_up(n, xmin, xmax, ymin, ymax);
   }
 
   template <class Point>
@@ -268,6 +270,21 @@ public:
   }
 
 private:
+  void set_up(std::size_t n, double xmin, double xmax, double ymin, double ymax)
+  {
+    xmin_ = xmin;
+    xmax_ = xmax;
+    ymin_ = ymin;
+    ymax_ = ymax;
+    // Coarse cells are 8 x 8 fine cells.
+    coarse_side_ = (std::max)(std::size_t(1), std::size_t(std::sqrt(double(n) / 256)));
+    fine_side_ = 8 * coarse_side_;
+    sx_ = xmax_ > xmin_ ? double(fine_side_) / (xmax_ - xmin_) : 0;
+    sy_ = ymax_ > ymin_ ? double(fine_side_) / (ymax_ - ymin_) : 0;
+    fine_.assign(fine_side_ * fine_side_, Vertex_handle());
+    coarse_.assign(coarse_side_ * coarse_side_, Vertex_handle());
+  }
+
   template <class Point>
   void cell(const Point& p, std::size_t& cx, std::size_t& cy) const
   {
@@ -281,6 +298,49 @@ private:
   std::size_t fine_side_ = 8, coarse_side_ = 1;
   std::vector<Vertex_handle> fine_, coarse_;
 };
+
+// The walk cap of a location from a hint among n points: about log2 n + 8 faces.
+inline std::size_t walk_cap(std::size_t n)
+{
+  std::size_t cap = 8;
+  for(std::size_t m = n; m > 1; m >>= 1)
+    cap += 1;
+  return cap;
+}
+
+// Inserts q into the Delaunay triangulation `dt`, located by a walk from vertex `from` (a
+// vertex inserted near q, as far as the caller knows: a tree neighbour, a hint) of at most
+// `cap` faces; past it the walk starts again from the vertex the grid holds near q and is
+// not capped. Returns q's vertex (an existing one for a duplicate). Counts the location in
+// `stats` (points_located, faces_visited, walk_fallbacks) when dt has dimension 2.
+// The one location-and-insertion step of every insertion from hints in the package (the
+// spanning-tree engine, imprecise points).
+template <class DT, class Grid>
+typename DT::Vertex_handle insert_walking_from(DT& dt, const typename DT::Point& q, typename DT::Vertex_handle from,
+                                               std::size_t cap, const Grid& grid,
+                                               std::vector<std::pair<typename DT::Face_handle, int>>& flip_stack,
+                                               Statistics& stats)
+{
+  using Vertex_handle = typename DT::Vertex_handle;
+  using Face_handle = typename DT::Face_handle;
+  if(dt.dimension() < 2)
+    return dt.insert(q, from->face());
+  Face_handle f = from->face();
+  int collinear = 0;
+  ++stats.points_located;
+  bool found = walk_towards(dt, f, q, cap, stats.faces_visited, collinear);
+  if(!found) {
+    ++stats.walk_fallbacks;
+    const Vertex_handle jump = grid.near(q);
+    if(jump != Vertex_handle())
+      f = jump->face();
+    // Bounded only so that an inexact kernel cannot cycle; CGAL's locate finishes then.
+    found = walk_towards(dt, f, q, 2 * dt.number_of_vertices() + 16, stats.faces_visited, collinear);
+  }
+  if(found && !f->has_vertex(dt.infinite_vertex()) && collinear == 0)
+    return insert_strictly_in_face(dt, q, f, flip_stack); // no need to locate again
+  return dt.insert(q, f); // on an edge, a vertex, or outside: CGAL's locate decides
+}
 
 // Whether the edges (ends listed in pairs) are much longer than the spacing of the points,
 // judged on a sample of 255 edges: the median length above 32 times the side of the area
@@ -373,9 +433,7 @@ void insert_along_spanning_forest(DT& dt, PointIterator points, std::size_t n, c
   for(std::size_t r = 0; r < n; ++r)
     if(round[r] == 0)
       grid.record(point[r], vertex[r]);
-  std::size_t cap = 8;
-  for(std::size_t m = n; m > 1; m >>= 1)
-    cap += 1; // about log2 n + 8 faces
+  const std::size_t cap = walk_cap(n);
   std::vector<std::pair<Face_handle, int>> flip_stack;
   // near[r]: the rank of the nearest ancestor-or-self of r already inserted.
   std::vector<std::uint32_t> near(n, no_rank);
@@ -393,29 +451,8 @@ void insert_along_spanning_forest(DT& dt, PointIterator points, std::size_t n, c
       // Insert point r, located from its nearest inserted ancestor (one exists: roots are in
       // round 0).
       const Point& q = point[r];
-      const Vertex_handle hint = vertex[near[r]];
       const std::size_t count = dt.number_of_vertices();
-      Vertex_handle v;
-      if(dt.dimension() == 2) {
-        Face_handle f = hint->face();
-        int collinear = 0;
-        ++stats.points_located;
-        bool found = walk_towards(dt, f, q, cap, stats.faces_visited, collinear);
-        if(!found) {
-          ++stats.walk_fallbacks;
-          const Vertex_handle jump = grid.near(q);
-          if(jump != Vertex_handle())
-            f = jump->face();
-          // Bounded only so that an inexact kernel cannot cycle; CGAL's locate finishes then.
-          found = walk_towards(dt, f, q, 2 * dt.number_of_vertices() + 16, stats.faces_visited, collinear);
-        }
-        if(found && !f->has_vertex(dt.infinite_vertex()) && collinear == 0)
-          v = insert_strictly_in_face(dt, q, f, flip_stack); // no need to locate again
-        else
-          v = dt.insert(q, f); // on an edge, a vertex, or outside: CGAL's locate decides
-      } else {
-        v = dt.insert(q, hint->face());
-      }
+      const Vertex_handle v = insert_walking_from(dt, q, vertex[near[r]], cap, grid, flip_stack, stats);
       on_vertex(r, v, dt.number_of_vertices() != count);
       grid.record(q, v);
       near[r] = std::uint32_t(r);

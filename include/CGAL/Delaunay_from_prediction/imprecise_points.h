@@ -1,0 +1,434 @@
+// Copyright (c) 2026 Delaunay_from_prediction contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Author(s): Delaunay_from_prediction founding team
+//
+// Entry point: the Delaunay triangulation of imprecise points (O. Devillers, "Delaunay
+// triangulation of imprecise points, a really fast algorithm"): disks are preprocessed once
+// (an insertion order, the Delaunay triangulation of their centres built in that order, and
+// for each disk the nearest centre among the disks before it: its hint); the triangulation of
+// an instance, one point per disk, is then built by inserting the points in the same order,
+// each located by a walk from the point of its hint's disk.
+
+#ifndef CGAL_DELAUNAY_FROM_PREDICTION_IMPRECISE_POINTS_H
+#define CGAL_DELAUNAY_FROM_PREDICTION_IMPRECISE_POINTS_H
+
+#include <CGAL/Delaunay_from_prediction/Statistics.h>
+#include <CGAL/Delaunay_from_prediction/parameters.h>
+#include <CGAL/Delaunay_from_prediction/internal/input_check.h>
+#include <CGAL/Delaunay_from_prediction/internal/point_insertion.h>
+#include <CGAL/Delaunay_from_prediction/internal/random.h>
+#include <CGAL/Delaunay_from_prediction/internal/spanning_tree_insertion.h>
+#include <CGAL/Delaunay_from_prediction/internal/spatial_order.h>
+#include <CGAL/Delaunay_from_prediction/internal/vertex_info.h>
+
+#include <CGAL/Delaunay_triangulation_2.h>
+#include <CGAL/Triangulation_data_structure_2.h>
+#include <CGAL/Triangulation_vertex_base_with_info_2.h>
+#include <CGAL/number_utils.h>
+
+#include <algorithm>
+#include <cstddef>
+#include <cstdint>
+#include <iterator>
+#include <limits>
+#include <sstream>
+#include <type_traits>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Delaunay_from_prediction {
+
+/*!
+\ingroup PkgDelaunayFromPredictionRef
+The order in which `Imprecise_points_2` inserts the disks, in its preprocessing and in every
+instance (named parameter `disk_order`).
+*/
+enum class Disk_order {
+  /// the default: the package's biased randomized grid order of the centres (random rounds,
+  /// each sorted along a grid), the order of the paper's fastest experiment, where
+  /// consecutive insertions are near each other in memory.
+  spatial,
+  /// a uniformly random order: the order of the paper's analysis (Theorem 1).
+  random
+};
+
+namespace internal_np {
+enum disk_order_t { disk_order };
+} // namespace internal_np
+
+namespace parameters {
+/// chooses the insertion order of `Imprecise_points_2`, see `Disk_order`.
+/// \param v a `Disk_order`.
+/// \returns the named parameter `disk_order` with value `v`.
+template <class T>
+CGAL::Named_function_parameters<T, internal_np::disk_order_t> disk_order(const T& v)
+{
+  return CGAL::Named_function_parameters<T, internal_np::disk_order_t>(v);
+}
+/// same, chained in front of other named parameters.
+/// \param v the value of the parameter.
+/// \param np the named parameters to chain after it.
+/// \returns the chain `v`, then `np`.
+template <class T, class A, class B, class C>
+CGAL::Named_function_parameters<T, internal_np::disk_order_t, CGAL::Named_function_parameters<A, B, C>>
+disk_order(const T& v, const CGAL::Named_function_parameters<A, B, C>& np)
+{
+  return CGAL::Named_function_parameters<T, internal_np::disk_order_t, CGAL::Named_function_parameters<A, B, C>>(v,
+                                                                                                                 np);
+}
+} // namespace parameters
+
+namespace internal {
+
+template <class T, class = void>
+struct is_range : std::false_type {};
+template <class T>
+struct is_range<T, std::void_t<decltype(std::begin(std::declval<const T&>()))>> : std::true_type {};
+
+} // namespace internal
+
+/*!
+\ingroup PkgDelaunayFromPredictionRef
+A set of imprecise points: n disks, each the region where one point of a future point set
+(an instance) will lie. Built once, it computes the Delaunay triangulation of any instance in
+expected linear time, where a build from scratch pays \f$O(n \log n)\f$ (O. Devillers,
+"Delaunay triangulation of imprecise points, a really fast algorithm", Theorem 1).
+
+<b>Preprocessing</b> (the constructor, \f$O(n \log n)\f$ expected): the disks are put in an
+order (`Disk_order`); the Delaunay triangulation of their centres is built incrementally in
+that order, and after the insertion of the k-th centre its nearest neighbour among the
+centres inserted before it is recorded (one of its Delaunay neighbours): the hint of the k-th
+disk. The triangulation of the centres is then discarded; the object keeps the order, the
+hints, the centres and the radii.
+
+<b>An instance</b> (`triangulate()`): its points are inserted in the same order, each located
+by a walk in the current triangulation that starts at the vertex of its hint's point. For
+disjoint unit disks (or unit disks that overlap at most a constant number of times) the walks
+cross a constant number of edges in expectation and the build takes expected linear time. The
+disks are not used by the computation itself: a point outside its disk, or disks of very
+different radii, only make the walks longer (a walk longer than about \f$\log_2 n + 8\f$ faces
+starts again from a vertex inserted near the point); the result is exact in every case.
+
+The result is exactly the triangulation CGAL's `Delaunay_triangulation_2` builds from the
+instance points (co-circular ties broken by CGAL's symbolic perturbation).
+
+\tparam Gt a model of `DelaunayTriangulationTraits_2` (a CGAL kernel), whose `Point_2` is the
+        point type of the triangulations `triangulate()` fills.
+*/
+template <class Gt>
+class Imprecise_points_2
+{
+public:
+  /// the point type.
+  using Point = typename Gt::Point_2;
+  /// the number type of the radii.
+  using FT = typename Gt::FT;
+
+  /*!
+  preprocesses the disks of the given centres and radii (disk `i` is centred at the `i`-th
+  centre, with the `i`-th radius).
+
+  \tparam CentreRange a random-access range of `Point`.
+  \tparam RadiusRange a range of values convertible to `FT`, as many as the centres.
+  \tparam NamedParameters a sequence of named parameters.
+  \param centres the centres of the disks.
+  \param radii the radii of the disks (0 is allowed: a point known exactly).
+  \param np optional named parameters among the following ones:
+  \cgalNamedParamsBegin
+    \cgalParamNBegin{disk_order}
+      \cgalParamDescription{the insertion order of the disks}
+      \cgalParamType{`Disk_order`}
+      \cgalParamDefault{`Disk_order::spatial`}
+    \cgalParamNEnd
+    \cgalParamNBegin{random_seed}
+      \cgalParamDescription{the seed of `Disk_order::random` (the rounds of the spatial order have
+        the package's fixed seed)}
+      \cgalParamType{`unsigned int`}
+      \cgalParamDefault{a fixed seed: the same disks give the same order}
+    \cgalParamNEnd
+    \cgalParamNBegin{geom_traits}
+      \cgalParamDescription{the traits used by the preprocessing}
+      \cgalParamType{`Gt`}
+      \cgalParamDefault{`Gt()`}
+    \cgalParamNEnd
+  \cgalNamedParamsEnd
+  \throws Invalid_prediction if the numbers of centres and radii differ, a centre or a radius
+          is not finite, a radius is negative, or there are \f$2^{32} - 1\f$ disks or more.
+  */
+  template <class CentreRange, class RadiusRange, class NamedParameters = parameters::Default_named_parameters,
+            class = std::enable_if_t<internal::is_range<RadiusRange>::value>>
+  Imprecise_points_2(const CentreRange& centres, const RadiusRange& radii,
+                     const NamedParameters& np = parameters::default_values())
+  {
+    for(const auto& r : radii)
+      radius_.push_back(FT(r));
+    read_centres(centres);
+    preprocess(np);
+  }
+
+  /*!
+  preprocesses the disks of the given centres, all of the same radius (the paper's case: unit
+  disks). Same named parameters and exceptions as above.
+  \tparam CentreRange a random-access range of `Point`.
+  \tparam NamedParameters a sequence of named parameters.
+  \param centres the centres of the disks.
+  \param radius the radius of every disk.
+  \param np optional named parameters, as above.
+  */
+  template <class CentreRange, class NamedParameters = parameters::Default_named_parameters>
+  Imprecise_points_2(const CentreRange& centres, const FT& radius,
+                     const NamedParameters& np = parameters::default_values())
+  {
+    radius_.assign(std::size_t(std::distance(std::begin(centres), std::end(centres))), radius);
+    read_centres(centres);
+    preprocess(np);
+  }
+
+  /// \returns the number of disks.
+  std::size_t size() const { return centre_.size(); }
+  /// \returns the centre of disk `i`.
+  /// \param i a disk index, below `size()`.
+  const Point& centre(std::size_t i) const { return centre_[i]; }
+  /// \returns the radius of disk `i`.
+  /// \param i a disk index, below `size()`.
+  const FT& radius(std::size_t i) const { return radius_[i]; }
+  /// tests a point against a disk (exactly with a kernel whose constructions are exact; with
+  /// `Epick` the squared distance is rounded).
+  /// \returns whether `p` lies in the closed disk `i`.
+  /// \param i a disk index, below `size()`.
+  /// \param p a point.
+  bool contains(std::size_t i, const Point& p) const
+  {
+    return CGAL::compare(traits_.compute_squared_distance_2_object()(centre_[i], p), radius_[i] * radius_[i]) !=
+           LARGER;
+  }
+  /// \returns the disks in insertion order: `insertion_order()[k]` is the index of the k-th
+  /// disk inserted, in the preprocessing and in every instance.
+  const std::vector<std::uint32_t>& insertion_order() const { return order_; }
+  /// \returns the hint of disk `i`: the disk whose centre is nearest to disk `i`'s among the
+  /// disks inserted before it (ties broken arbitrarily), or `size()` for the first disk inserted.
+  /// \param i a disk index, below `size()`.
+  std::size_t hint(std::size_t i) const
+  {
+    const std::uint32_t r = rank_[i];
+    return r == 0 ? size() : std::size_t(order_[hint_rank_[r]]);
+  }
+
+  /*!
+  computes the Delaunay triangulation of an instance: one point per disk, `instance[i]` for
+  disk `i`. A point may lie outside its disk: the result is still exact, only slower.
+
+  \tparam PointRange a random-access range of `Point`, `size()` of them.
+  \tparam DT a `CGAL::Delaunay_triangulation_2<Gt, Tds>`. If its vertices have an `info()`
+          assignable from `std::size_t`, every vertex's `info()` is set to the index of its disk
+          (for points at equal positions, the smallest of their indices).
+  \tparam NamedParameters a sequence of named parameters (none is used yet).
+  \param instance the points.
+  \param dt receives the result; cleared first.
+  \param np optional named parameters, accepted for the interface to grow; none is used yet.
+  \returns what the call did: `points_located`, `faces_visited` (divided by `points_located`:
+           the mean length of a walk), `walk_fallbacks`, `points_reinserted` (every point),
+           `duplicate_points`.
+  \throws Invalid_prediction if `instance` does not have `size()` points or a point has a
+          non-finite coordinate. Then `dt` is unchanged.
+  */
+  template <class PointRange, class DT, class NamedParameters = parameters::Default_named_parameters>
+  Statistics triangulate(const PointRange& instance, DT& dt,
+                         const NamedParameters& np = parameters::default_values()) const
+  {
+    static_assert(std::is_same<typename DT::Point, Point>::value,
+                  "Imprecise_points_2::triangulate: the triangulation's points must be Gt::Point_2");
+    (void)np;
+    using Vertex_handle = typename DT::Vertex_handle;
+    using Face_handle = typename DT::Face_handle;
+    const auto points = std::begin(instance);
+    const std::size_t n = std::size_t(std::distance(std::begin(instance), std::end(instance)));
+    if(n != size()) {
+      std::ostringstream msg;
+      msg << "Delaunay_from_prediction: an instance of " << n << " points for " << size() << " disks";
+      throw Invalid_prediction(msg.str());
+    }
+    internal::check_points_are_finite(points, n);
+    Statistics stats;
+    dt.clear();
+    stats.points_reinserted = n;
+    if(n == 0)
+      return stats;
+    internal::Vertex_grid<Vertex_handle> grid(n, xmin_, xmax_, ymin_, ymax_);
+    const std::size_t cap = internal::walk_cap(n);
+    std::vector<Vertex_handle> vertex(n);
+    std::vector<std::pair<Face_handle, int>> flip_stack;
+    // The points in insertion order first: the gather's cache misses overlap in a loop of their
+    // own, where the insertion loop would wait for each.
+    std::vector<Point> point(n);
+    for(std::size_t r = 0; r < n; ++r)
+      point[r] = points[order_[r]];
+    for(std::size_t r = 0; r < n; ++r) {
+      const std::uint32_t i = order_[r];
+      const Point& q = point[r];
+      const std::size_t count = dt.number_of_vertices();
+      const Vertex_handle v = r == 0 ? dt.insert(q)
+                                     : internal::insert_walking_from(dt, q, vertex[hint_rank_[r]], cap, grid,
+                                                                     flip_stack, stats);
+      if(dt.number_of_vertices() != count) {
+        internal::set_index_info(v, i);
+      } else {
+        internal::merge_index_info(v, i);
+        ++stats.duplicate_points;
+      }
+      vertex[r] = v;
+      grid.record(q, v);
+    }
+    return stats;
+  }
+
+private:
+  template <class CentreRange>
+  void read_centres(const CentreRange& centres)
+  {
+    centre_.assign(std::begin(centres), std::end(centres));
+    const std::size_t n = centre_.size();
+    if(radius_.size() != n) {
+      std::ostringstream msg;
+      msg << "Delaunay_from_prediction: " << n << " disk centres but " << radius_.size() << " radii";
+      throw Invalid_prediction(msg.str());
+    }
+    if(n >= std::size_t(internal::no_rank))
+      throw Invalid_prediction("Delaunay_from_prediction: 2^32 - 1 disks or more are not supported");
+    for(std::size_t i = 0; i < n; ++i) {
+      if(!CGAL::is_finite(centre_[i].x()) || !CGAL::is_finite(centre_[i].y())) {
+        std::ostringstream msg;
+        msg << "Delaunay_from_prediction: the centre of disk " << i << " has a non-finite coordinate ("
+            << CGAL::to_double(centre_[i].x()) << ", " << CGAL::to_double(centre_[i].y()) << ")";
+        throw Invalid_prediction(msg.str());
+      }
+      if(!CGAL::is_finite(radius_[i]) || CGAL::is_negative(radius_[i])) {
+        std::ostringstream msg;
+        msg << "Delaunay_from_prediction: disk " << i << " has radius " << CGAL::to_double(radius_[i])
+            << " (a radius must be finite and not negative)";
+        throw Invalid_prediction(msg.str());
+      }
+    }
+  }
+
+  template <class NamedParameters>
+  void preprocess(const NamedParameters& np)
+  {
+    using parameters::choose_parameter;
+    using parameters::get_parameter;
+    traits_ = choose_parameter(get_parameter(np, CGAL::internal_np::geom_traits), Gt());
+    const Disk_order disk_order = choose_parameter(get_parameter(np, internal_np::disk_order), Disk_order::spatial);
+    const std::uint64_t seed =
+        choose_parameter(get_parameter(np, CGAL::internal_np::random_seed), 0x5eed1309u) + 0x1309ull;
+    const std::size_t n = size();
+    order_.resize(n);
+    for(std::size_t i = 0; i < n; ++i)
+      order_[i] = std::uint32_t(i);
+    internal::Splitmix64 random{seed};
+    if(disk_order == Disk_order::random) {
+      for(std::size_t k = n; k > 1; --k)
+        std::swap(order_[k - 1], order_[random.below(k)]);
+    } else {
+      internal::sort_along_grid(order_, [&](std::uint32_t i) -> const Point& { return centre_[i]; }, true);
+    }
+    rank_.resize(n);
+    for(std::size_t r = 0; r < n; ++r)
+      rank_[order_[r]] = std::uint32_t(r);
+    // The box of the disks, for the grid of fallback locations of the instances.
+    double max_radius = 0;
+    for(std::size_t i = 0; i < n; ++i) {
+      const double x = CGAL::to_double(centre_[i].x()), y = CGAL::to_double(centre_[i].y());
+      xmin_ = i == 0 ? x : (std::min)(xmin_, x);
+      xmax_ = i == 0 ? x : (std::max)(xmax_, x);
+      ymin_ = i == 0 ? y : (std::min)(ymin_, y);
+      ymax_ = i == 0 ? y : (std::max)(ymax_, y);
+      max_radius = (std::max)(max_radius, CGAL::to_double(radius_[i]));
+    }
+    if(max_radius < std::numeric_limits<double>::infinity()) {
+      xmin_ -= max_radius;
+      xmax_ += max_radius;
+      ymin_ -= max_radius;
+      ymax_ += max_radius;
+    }
+    compute_hints();
+  }
+
+  // The Delaunay triangulation of the centres, built in insertion order; the hint of the
+  // k-th centre is its nearest Delaunay neighbour among the centres before it, found on the
+  // fan of its new vertex (the nearest neighbour of a point is a Delaunay neighbour). Each
+  // centre is located from the previous one (spatial order) or from the last centre inserted
+  // in its grid cell (random order, where the previous centre is anywhere). The distances are
+  // compared in double: a hint only chooses where a walk starts.
+  void compute_hints()
+  {
+    using Vb = Triangulation_vertex_base_with_info_2<std::uint32_t, Gt>;
+    using Tds = Triangulation_data_structure_2<Vb>;
+    using Centre_triangulation = Delaunay_triangulation_2<Gt, Tds>;
+    using Vertex_handle = typename Centre_triangulation::Vertex_handle;
+    using Face_handle = typename Centre_triangulation::Face_handle;
+    const std::size_t n = size();
+    hint_rank_.assign(n, 0);
+    Centre_triangulation dt(traits_);
+    internal::Vertex_grid<Vertex_handle> grid(n, xmin_, xmax_, ymin_, ymax_);
+    std::vector<std::pair<Face_handle, int>> flip_stack;
+    Vertex_handle previous;
+    for(std::size_t r = 0; r < n; ++r) {
+      const Point& c = centre_[order_[r]];
+      Vertex_handle start = grid.near(c);
+      if(start == Vertex_handle() || (previous != Vertex_handle() && closer(previous->point(), start->point(), c)))
+        start = previous;
+      const std::size_t count = dt.number_of_vertices();
+      const Vertex_handle v =
+          internal::insert_near(dt, c, start == Vertex_handle() ? Face_handle() : start->face(), flip_stack);
+      if(dt.number_of_vertices() == count) { // a centre already inserted
+        hint_rank_[r] = v->info();
+        previous = v;
+        continue;
+      }
+      v->info() = std::uint32_t(r);
+      if(r != 0) {
+        // The nearest finite neighbour of v; in dimension 0 there is none but the first centre.
+        std::uint32_t best = 0;
+        double best_distance = std::numeric_limits<double>::infinity();
+        if(dt.dimension() > 0) {
+          auto w = dt.incident_vertices(v), end = w;
+          do {
+            if(!dt.is_infinite(w) && squared_distance(w->point(), c) < best_distance) {
+              best_distance = squared_distance(w->point(), c);
+              best = w->info();
+            }
+          } while(++w != end);
+        }
+        hint_rank_[r] = best;
+      }
+      grid.record(c, v);
+      previous = v;
+    }
+  }
+
+  static double squared_distance(const Point& p, const Point& q)
+  {
+    const double dx = CGAL::to_double(p.x()) - CGAL::to_double(q.x());
+    const double dy = CGAL::to_double(p.y()) - CGAL::to_double(q.y());
+    return dx * dx + dy * dy;
+  }
+  // Whether a is nearer to c than b is (in double; for choosing a start only).
+  static bool closer(const Point& a, const Point& b, const Point& c)
+  {
+    return squared_distance(a, c) < squared_distance(b, c);
+  }
+
+  Gt traits_;
+  std::vector<Point> centre_;
+  std::vector<FT> radius_;
+  std::vector<std::uint32_t> order_;     // order_[r]: the disk inserted r-th
+  std::vector<std::uint32_t> hint_rank_; // hint_rank_[r]: the rank of the hint of the disk of rank r (r > 0)
+  std::vector<std::uint32_t> rank_;      // rank_[i]: the rank of disk i (inverse of order_)
+  double xmin_ = 0, xmax_ = 0, ymin_ = 0, ymax_ = 0;
+};
+
+} // namespace Delaunay_from_prediction
+} // namespace CGAL
+
+#endif // CGAL_DELAUNAY_FROM_PREDICTION_IMPRECISE_POINTS_H
