@@ -46,33 +46,6 @@ namespace {
 using Edge = std::pair<std::uint32_t, std::uint32_t>;
 using Edges = std::vector<Edge>;
 
-std::vector<Point> make_points(const std::string& dist, std::size_t n, std::uint64_t seed)
-{
-  Rng rng{seed};
-  std::vector<Point> points;
-  points.reserve(n);
-  if(dist == "uniform")
-    return uniform_points(n, seed);
-  if(dist == "clustered") {
-    std::vector<Point> centres;
-    for(int c = 0; c < 1000; ++c) {
-      const double x = rng.uniform();
-      centres.emplace_back(x, rng.uniform());
-    }
-    for(std::size_t i = 0; i < n; ++i) {
-      const Point& c = centres[rng.below(centres.size())];
-      const double dx = 0.002 * rng.normal();
-      points.emplace_back(c.x() + dx, c.y() + 0.002 * rng.normal());
-    }
-    return points;
-  }
-  for(std::size_t i = 0; i < n; ++i) { // graded
-    const double u = rng.uniform(), v = rng.uniform();
-    points.emplace_back(u * u * u * u, v * v * v * v);
-  }
-  return points;
-}
-
 using DFP::internal::Union_find;
 
 // Kruskal over the edges of `dt` (info = point index), as a user would write it: edges
@@ -166,7 +139,7 @@ int main(int argc, char** argv)
   for(const std::string& dist : dists) {
     for(const std::string& size : sizes) {
       const std::size_t n = std::size_t(std::atof(size.c_str()));
-      const std::vector<Point> points = make_points(dist, n, salted_seed(0x5e77, seed, dist, n));
+      const std::vector<Point> points = distribution_points(dist, n, salted_seed(0x5e77, seed, dist, n));
       const DTI reference = build_indexed(points);
       Signature cgal_sig;
       {

@@ -126,6 +126,36 @@ inline std::vector<Point> uniform_points(std::size_t n, std::uint64_t seed)
   return points;
 }
 
+// Points of a named distribution: "uniform" in the unit square; "clustered" (1000 Gaussian
+// clusters of standard deviation 0.002); "graded" (x = u^4, y = v^4: density varying over 8
+// orders of magnitude).
+inline std::vector<Point> distribution_points(const std::string& dist, std::size_t n, std::uint64_t seed)
+{
+  Rng rng{seed};
+  std::vector<Point> points;
+  points.reserve(n);
+  if(dist == "uniform")
+    return uniform_points(n, seed);
+  if(dist == "clustered") {
+    std::vector<Point> centres;
+    for(int c = 0; c < 1000; ++c) {
+      const double x = rng.uniform();
+      centres.emplace_back(x, rng.uniform());
+    }
+    for(std::size_t i = 0; i < n; ++i) {
+      const Point& c = centres[rng.below(centres.size())];
+      const double dx = 0.002 * rng.normal();
+      points.emplace_back(c.x() + dx, c.y() + 0.002 * rng.normal());
+    }
+    return points;
+  }
+  for(std::size_t i = 0; i < n; ++i) { // graded
+    const double u = rng.uniform(), v = rng.uniform();
+    points.emplace_back(u * u * u * u, v * v * v * v);
+  }
+  return points;
+}
+
 // (point, index) pairs: what a range insert into a DTI reads.
 inline std::vector<std::pair<Point, std::uint32_t>> with_indices(const std::vector<Point>& points)
 {

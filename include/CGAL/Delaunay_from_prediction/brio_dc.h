@@ -1,0 +1,450 @@
+// Copyright (c) 2026 Delaunay_from_prediction contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Author(s): Delaunay_from_prediction founding team
+//
+// Entry point: BrioDC (K. Buchin, W. Mulzer, "Linear-time Delaunay triangulations simplified"):
+// the Delaunay triangulation by a biased randomized insertion order whose samples meet every
+// component of the nearest-neighbour graph, each point inserted after a walk along its
+// nearest-neighbour graph edges from a point already inserted.
+
+#ifndef CGAL_DELAUNAY_FROM_PREDICTION_BRIO_DC_H
+#define CGAL_DELAUNAY_FROM_PREDICTION_BRIO_DC_H
+
+#include <CGAL/Delaunay_from_prediction/Statistics.h>
+#include <CGAL/Delaunay_from_prediction/parameters.h>
+#include <CGAL/Delaunay_from_prediction/internal/input_check.h>
+#include <CGAL/Delaunay_from_prediction/internal/random.h>
+#include <CGAL/Delaunay_from_prediction/internal/spanning_tree_insertion.h>
+#include <CGAL/Delaunay_from_prediction/internal/vertex_info.h>
+
+#include <CGAL/number_utils.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <iterator>
+#include <limits>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Delaunay_from_prediction {
+namespace internal {
+
+// The nearest-neighbour graph of the points xy[0..m) (coordinates in double, x and y
+// interleaved), with a grid of about two points a cell over their bounding box, rows in
+// order; a cell holding more than 32 points (clusters, a density varying by orders of
+// magnitude) is refined by the same procedure on its points, up to depth 6. Writes to `order`
+// the points in the grid order (refined cells in their own grid order): order[k] is the input
+// position of the k-th point; and to `nn` the nearest neighbour of each, as a position in
+// that order (no_rank for a single point). Each point's search reads rings of cells around
+// its cell until no nearer point can lie beyond, at most `budget` points past its own cell
+// (then the nearest point read is taken); ties go to the smaller position in the order.
+// Double precision and the budget make the graph approximate in rare cases: it only guides
+// the insertion, so that costs time, never correctness.
+inline void nearest_neighbour_graph(const double* xy, std::size_t m, std::vector<std::uint32_t>& order,
+                                    std::vector<std::uint32_t>& nn, int depth = 0)
+{
+  constexpr std::size_t crowded = 32, budget = 512;
+  order.resize(m);
+  nn.assign(m, no_rank);
+  if(m == 0)
+    return;
+  double xmin = xy[0], xmax = xy[0], ymin = xy[1], ymax = xy[1];
+  for(std::size_t k = 1; k < m; ++k) {
+    xmin = (std::min)(xmin, xy[2 * k]);
+    xmax = (std::max)(xmax, xy[2 * k]);
+    ymin = (std::min)(ymin, xy[2 * k + 1]);
+    ymax = (std::max)(ymax, xy[2 * k + 1]);
+  }
+  const double width = xmax - xmin, height = ymax - ymin;
+  // Square cells of area 2 / density; a degenerate box gets a row or a column of cells.
+  const double target = (std::max)(1.0, double(m) / 2);
+  std::size_t side_x = 1, side_y = 1;
+  if(width > 0 && height > 0) {
+    const double cell = std::sqrt(width * height / target);
+    side_x = std::size_t((std::min)(4096.0, (std::max)(1.0, std::floor(width / cell))));
+    side_y = std::size_t((std::min)(4096.0, (std::max)(1.0, std::floor(height / cell))));
+  } else if(width > 0) {
+    side_x = std::size_t((std::min)(double(1 << 22), target));
+  } else if(height > 0) {
+    side_y = std::size_t((std::min)(double(1 << 22), target));
+  }
+  const double sx = width > 0 ? double(side_x) / width : 0, sy = height > 0 ? double(side_y) / height : 0;
+  const double cell_width = width > 0 ? width / double(side_x) : 0, cell_height = height > 0 ? height / double(side_y) : 0;
+  // A point beyond ring r of cells around its own is at least r of the shorter side away
+  // (plus its distance to its cell's sides); a side of length 0 does not count.
+  const double shorter = cell_width > 0 && cell_height > 0 ? (std::min)(cell_width, cell_height)
+                                                           : (std::max)(cell_width, cell_height);
+  const std::size_t cells = side_x * side_y;
+  std::vector<std::uint32_t> key(m), start(cells + 1, 0);
+  auto cell_of = [&](double x, double y, long& cx, long& cy) {
+    const double fx = (x - xmin) * sx, fy = (y - ymin) * sy;
+    cx = long(fx > 0 ? (std::min)(fx, double(side_x - 1)) : 0);
+    cy = long(fy > 0 ? (std::min)(fy, double(side_y - 1)) : 0);
+  };
+  for(std::size_t k = 0; k < m; ++k) {
+    long cx, cy;
+    cell_of(xy[2 * k], xy[2 * k + 1], cx, cy);
+    key[k] = std::uint32_t(std::size_t(cy) * side_x + std::size_t(cx));
+    ++start[key[k] + 1];
+  }
+  for(std::size_t c = 0; c < cells; ++c)
+    start[c + 1] += start[c];
+  {
+    std::vector<std::uint32_t> fill(start.begin(), start.end() - 1);
+    for(std::size_t k = 0; k < m; ++k)
+      order[fill[key[k]]++] = std::uint32_t(k);
+  }
+  std::vector<double> p(2 * m); // coordinates in grid order
+  for(std::size_t k = 0; k < m; ++k) {
+    p[2 * k] = xy[2 * order[k]];
+    p[2 * k + 1] = xy[2 * order[k] + 1];
+  }
+  std::vector<double> best(m, std::numeric_limits<double>::infinity());
+  std::vector<unsigned char> refined(cells, 0);
+  {
+    std::vector<std::uint32_t> sub_order, sub_nn, moved;
+    std::vector<double> sub_p;
+    for(std::size_t c = 0; c < cells; ++c) {
+      const std::size_t first = start[c], count = start[c + 1] - start[c];
+      if(count <= crowded || count == m || depth >= 6)
+        continue;
+      refined[c] = 1;
+      nearest_neighbour_graph(p.data() + 2 * first, count, sub_order, sub_nn, depth + 1);
+      moved.assign(order.begin() + std::ptrdiff_t(first), order.begin() + std::ptrdiff_t(first + count));
+      sub_p.assign(p.begin() + std::ptrdiff_t(2 * first), p.begin() + std::ptrdiff_t(2 * (first + count)));
+      for(std::size_t a = 0; a < count; ++a) {
+        order[first + a] = moved[sub_order[a]];
+        p[2 * (first + a)] = sub_p[2 * sub_order[a]];
+        p[2 * (first + a) + 1] = sub_p[2 * sub_order[a] + 1];
+      }
+      for(std::size_t a = 0; a < count; ++a) {
+        if(sub_nn[a] == no_rank)
+          continue;
+        const std::size_t b = first + sub_nn[a];
+        nn[first + a] = std::uint32_t(b);
+        const double dx = p[2 * b] - p[2 * (first + a)], dy = p[2 * b + 1] - p[2 * (first + a) + 1];
+        best[first + a] = dx * dx + dy * dy;
+      }
+    }
+  }
+  for(std::size_t c = 0; c < cells; ++c) {
+    const long cx = long(c % side_x), cy = long(c / side_x);
+    const double cell_x0 = xmin + double(cx) * cell_width, cell_y0 = ymin + double(cy) * cell_height;
+    const bool interior = cx > 0 && cy > 0 && cx + 1 < long(side_x) && cy + 1 < long(side_y);
+    for(std::uint32_t k = start[c]; k < start[c + 1]; ++k) {
+      const double x = p[2 * k], y = p[2 * k + 1];
+      double b = best[k];
+      std::uint32_t bk = nn[k];
+      // Branch-free: whether a candidate is nearer is not predictable. Candidates read in
+      // increasing position need only the strict comparison for the tie rule.
+      auto consider_in_order = [&](std::uint32_t j) {
+        const double dx = p[2 * j] - x, dy = p[2 * j + 1] - y;
+        const double d = j != k ? dx * dx + dy * dy : std::numeric_limits<double>::infinity();
+        const bool nearer = d < b;
+        b = nearer ? d : b;
+        bk = nearer ? j : bk;
+      };
+      auto consider = [&](std::uint32_t j) {
+        const double dx = p[2 * j] - x, dy = p[2 * j + 1] - y;
+        const double d = j != k ? dx * dx + dy * dy : std::numeric_limits<double>::infinity();
+        const bool nearer = d < b || (d == b && j < bk);
+        b = nearer ? d : b;
+        bk = nearer ? j : bk;
+      };
+      // The distance from the point to the sides of its cell (a degenerate axis aside).
+      double margin = std::numeric_limits<double>::infinity();
+      if(cell_width > 0)
+        margin = (std::min)({margin, x - cell_x0, cell_x0 + cell_width - x});
+      if(cell_height > 0)
+        margin = (std::min)({margin, y - cell_y0, cell_y0 + cell_height - y});
+      margin = (std::max)(0.0, margin);
+      long r = 1;
+      std::size_t read = 0;
+      bool searched = false;
+      if(interior && !refined[c]) {
+        // The common case: the 3 x 3 cells around are three runs of the grid order (rows).
+        std::uint32_t run[3][2];
+        std::size_t total = 0;
+        for(int dy = -1; dy <= 1; ++dy) {
+          const std::size_t row = std::size_t(cy + dy) * side_x + std::size_t(cx);
+          run[dy + 1][0] = start[row - 1];
+          run[dy + 1][1] = start[row + 2];
+          total += run[dy + 1][1] - run[dy + 1][0];
+        }
+        if(total <= budget) {
+          for(int t = 0; t < 3; ++t)
+            for(std::uint32_t j = run[t][0]; j < run[t][1]; ++j)
+              consider_in_order(j);
+          searched = b <= (shorter + margin) * (shorter + margin);
+          r = 2;
+          read = total;
+        }
+      }
+      if(!searched && r == 1) {
+        if(!refined[c]) { // (a cell is that large only when it holds every point: equal points)
+          for(std::uint32_t j = start[c]; j < start[c + 1] && read < budget && b > 0; ++j, ++read)
+            consider(j);
+          read = 0;
+        }
+        searched = b <= margin * margin;
+      }
+      for(; !searched; ++r) {
+        // Cells at Chebyshev distance r from (cx, cy).
+        const long x0 = cx - r, x1 = cx + r, y0 = cy - r, y1 = cy + r;
+        bool any_cell = false;
+        for(long gy = (std::max)(0L, y0); gy <= (std::min)(long(side_y) - 1, y1) && read < budget; ++gy) {
+          const bool edge_row = gy == y0 || gy == y1;
+          for(long gx = (std::max)(0L, x0); gx <= (std::min)(long(side_x) - 1, x1) && read < budget;
+              gx += (edge_row || gx == x1) ? 1 : (std::max)(1L, x1 - gx)) {
+            any_cell = true;
+            const std::size_t cell = std::size_t(gy) * side_x + std::size_t(gx);
+            const std::uint32_t last = (std::min)(start[cell + 1], std::uint32_t(start[cell] + (budget - read)));
+            for(std::uint32_t j = start[cell]; j < last; ++j)
+              consider(j);
+            read += last - start[cell];
+          }
+        }
+        const double reach = double(r) * shorter + margin;
+        searched = !any_cell || b <= reach * reach || read >= budget || b == 0;
+      }
+      best[k] = b;
+      nn[k] = bk;
+    }
+  }
+}
+
+} // namespace internal
+
+/*!
+\ingroup PkgDelaunayFromPredictionRef
+computes the Delaunay triangulation of `points` into `dt` by BrioDC (K. Buchin, W. Mulzer,
+"Linear-time Delaunay triangulations simplified"): a randomized incremental construction whose
+insertion order is a gradation of samples \f$P = S_0 \supseteq S_1 \supseteq \dots \supseteq S_\ell\f$,
+each \f$S_{i+1}\f$ holding every point of \f$S_i\f$ with probability 1/2 and at least one point of
+every connected component of the nearest-neighbour graph \f$N(S_i)\f$. The points of
+\f$S_i \setminus S_{i+1}\f$ are inserted component by component, each located by a walk that
+starts at the vertex of its neighbour in \f$N(S_i)\f$ inserted before it.
+
+The nearest-neighbour graphs are computed with a uniform grid of about two points a cell (not
+\cgal's spatial searching: a grid gives the neighbours in expected linear time on points of
+bounded spread, as the paper's Theorem 1 assumes, and its cells also order the insertion for
+locality), in double precision, a search reading at most 512 points: the graph only guides
+the insertion, so an approximate neighbour (points of wildly varying density) costs time, never
+correctness. A walk longer than about \f$\log_2 n + 8\f$ faces starts again from a vertex
+inserted near the point. Expected time \f$O(n)\f$ on points of polynomially bounded spread
+(Theorem 2).
+
+The result is exactly the triangulation \cgal's `Delaunay_triangulation_2` builds from the same
+points (co-circular ties broken by \cgal's symbolic perturbation).
+
+\tparam PointRange a random-access range of `DT::Point`.
+\tparam DT a `CGAL::Delaunay_triangulation_2<Gt, Tds>`. If its vertices have an `info()`
+        assignable from `std::size_t`, every vertex's `info()` is set to the index of its point
+        (for duplicate points, the smallest of their indices).
+\tparam NamedParameters a sequence of named parameters.
+
+\param points the points.
+\param dt receives the result; cleared first.
+\param np optional named parameters among the following ones:
+\cgalNamedParamsBegin
+  \cgalParamNBegin{random_seed}
+    \cgalParamDescription{the seed of the samples}
+    \cgalParamType{`unsigned int`}
+    \cgalParamDefault{a fixed seed}
+  \cgalParamNEnd
+\cgalNamedParamsEnd
+
+\returns what the call did: `points_located`, `faces_visited` (divided by `points_located`: the
+         mean length of a walk), `walk_fallbacks`, `insertion_rounds` (the number of samples),
+         `points_reinserted` (every point), `duplicate_points`.
+\throws Invalid_prediction if a point has a non-finite coordinate, or there are \f$2^{32} - 1\f$
+        points or more. Then `dt` is unchanged.
+*/
+template <class PointRange, class DT, class NamedParameters = parameters::Default_named_parameters>
+Statistics brio_dc_delaunay(const PointRange& points, DT& dt, const NamedParameters& np = parameters::default_values())
+{
+  using parameters::choose_parameter;
+  using parameters::get_parameter;
+  using Point = typename DT::Point;
+  using Vertex_handle = typename DT::Vertex_handle;
+  using Face_handle = typename DT::Face_handle;
+  const auto point_begin = std::begin(points);
+  const std::size_t n = std::size_t(std::distance(std::begin(points), std::end(points)));
+  internal::check_points_are_finite(point_begin, n);
+  if(n >= std::size_t(internal::no_rank))
+    throw Invalid_prediction("Delaunay_from_prediction: 2^32 - 1 points or more are not supported by brio_dc_delaunay");
+  const std::uint64_t seed = choose_parameter(get_parameter(np, CGAL::internal_np::random_seed), 0xb410dcu);
+  Statistics stats;
+  dt.clear();
+  stats.points_reinserted = n;
+  if(n == 0)
+    return stats;
+  // The points, gathered (every later pass reads them by index).
+  std::vector<Point> point(point_begin, point_begin + std::ptrdiff_t(n));
+  auto point_at = [&](std::uint32_t i) -> const Point& { return point[i]; };
+
+  // The gradation, from S_0 = P down: each level in grid order, with its nearest-neighbour
+  // graph (positions within the level) and which of its points are in the next sample.
+  struct Level
+  {
+    std::vector<std::uint32_t> members;     // point indices, in grid order
+    std::vector<std::uint32_t> nn;          // nearest neighbour, by position
+    std::vector<unsigned char> in_next;     // in S_{i+1}
+  };
+  std::vector<Level> levels;
+  std::vector<std::uint32_t> original;   // the caller's index of each point (after renumbering)
+  std::vector<Vertex_handle> vertex(n); // the vertex of each point, once inserted
+  internal::Vertex_grid<Vertex_handle> vertex_grid(n, [&](std::size_t i) -> const Point& { return point[i]; });
+  internal::Splitmix64 random{seed + 0xb410dcull};
+  {
+    std::vector<std::uint32_t> members(n);
+    for(std::size_t i = 0; i < n; ++i)
+      members[i] = std::uint32_t(i);
+    std::vector<double> xy;
+    std::vector<std::uint32_t> order;
+    while(members.size() > 64) {
+      Level level;
+      const std::size_t m = members.size();
+      xy.resize(2 * m);
+      for(std::size_t k = 0; k < m; ++k) {
+        xy[2 * k] = CGAL::to_double(point[members[k]].x());
+        xy[2 * k + 1] = CGAL::to_double(point[members[k]].y());
+      }
+      internal::nearest_neighbour_graph(xy.data(), m, order, level.nn);
+      level.members.resize(m);
+      for(std::size_t k = 0; k < m; ++k)
+        level.members[k] = members[order[k]];
+      if(levels.empty()) {
+        // Renumber the points in the grid order of the first level: every later pass then
+        // reads `point` and `vertex` in nearly increasing order, where the input order would
+        // make each read a cache miss.
+        std::vector<Point> sorted(n);
+        for(std::size_t k = 0; k < n; ++k)
+          sorted[k] = point[level.members[k]];
+        point.swap(sorted);
+        original.swap(level.members);
+        level.members.resize(n);
+        for(std::size_t k = 0; k < n; ++k)
+          level.members[k] = std::uint32_t(k);
+      }
+      members.clear();
+      // A matching of two points on the cycle of each component of the graph (a functional
+      // graph: each component is a tree hanging from one cycle, two mutual neighbours unless
+      // neighbours were approximate); one point of each pair goes to the sample, every other
+      // point with probability 1/2.
+      level.in_next.assign(m, 2); // 2: not decided
+      std::vector<std::uint32_t> state(m, 0), path;
+      for(std::uint32_t s = 0; s < m; ++s) {
+        if(state[s] != 0)
+          continue;
+        // Follow the neighbours from s until a point seen before: on this path (a new cycle)
+        // or in an earlier one (a tree hanging from a known component).
+        path.clear();
+        std::uint32_t u = s;
+        while(state[u] == 0) {
+          state[u] = s + 1;
+          path.push_back(u);
+          u = level.nn[u];
+        }
+        if(state[u] == s + 1) { // a new cycle through u: match u with its neighbour
+          const std::uint32_t v = level.nn[u];
+          const bool keep_u = (random() & 1) != 0;
+          level.in_next[u] = keep_u ? 1 : 0;
+          if(v != u)
+            level.in_next[v] = keep_u ? 0 : 1;
+        }
+      }
+      for(std::uint32_t k = 0; k < m; ++k) {
+        if(level.in_next[k] == 2)
+          level.in_next[k] = (random() & 1) != 0 ? 1 : 0;
+        if(level.in_next[k])
+          members.push_back(level.members[k]);
+      }
+      levels.push_back(std::move(level));
+    }
+    // The last sample, small: inserted first, by CGAL's insertion.
+    stats.insertion_rounds = levels.size() + 1;
+    Face_handle hint;
+    for(std::uint32_t i : members) {
+      const std::size_t count = dt.number_of_vertices();
+      const Vertex_handle v = dt.insert(point[i], hint);
+      hint = v->face();
+      const std::size_t caller_index = original.empty() ? i : original[i];
+      if(dt.number_of_vertices() != count) {
+        internal::set_index_info(v, caller_index);
+      } else {
+        internal::merge_index_info(v, caller_index);
+        ++stats.duplicate_points;
+      }
+      vertex[i] = v;
+      vertex_grid.record(point[i], v);
+    }
+  }
+  const std::size_t cap = internal::walk_cap(n);
+  std::vector<std::pair<Face_handle, int>> flip_stack;
+  // From the coarsest level down: the points not in the next sample, component by component
+  // in grid order of their first sampled point, each from its graph neighbour (depth-first
+  // along the graph's edges, both directions).
+  std::vector<std::uint32_t> children_start, children, stack;
+  std::vector<unsigned char> done;
+  for(std::size_t l = levels.size(); l-- > 0;) {
+    const Level& level = levels[l];
+    const std::size_t m = level.members.size();
+    children_start.assign(m + 1, 0);
+    for(std::uint32_t k = 0; k < m; ++k)
+      ++children_start[level.nn[k] + 1];
+    for(std::size_t k = 0; k < m; ++k)
+      children_start[k + 1] += children_start[k];
+    children.resize(m);
+    {
+      std::vector<std::uint32_t> fill(children_start.begin(), children_start.end() - 1);
+      for(std::uint32_t k = 0; k < m; ++k)
+        children[fill[level.nn[k]]++] = k;
+    }
+    done.assign(m, 0);
+    for(std::uint32_t k = 0; k < m; ++k)
+      done[k] = level.in_next[k];
+    for(std::uint32_t s = 0; s < m; ++s) {
+      if(!level.in_next[s] || done[s] == 2)
+        continue;
+      done[s] = 2; // 2: its neighbours were pushed
+      stack.assign(1, s);
+      while(!stack.empty()) {
+        const std::uint32_t u = stack.back();
+        stack.pop_back();
+        auto visit = [&](std::uint32_t w) {
+          if(done[w] == 2)
+            return;
+          if(done[w] == 0) { // insert w, located from u
+            const std::uint32_t i = level.members[w];
+            const std::size_t count = dt.number_of_vertices();
+            const Vertex_handle v = internal::insert_walking_from(dt, point[i], vertex[level.members[u]], cap,
+                                                                  vertex_grid, flip_stack, stats);
+            if(dt.number_of_vertices() != count) {
+              internal::set_index_info(v, original[i]);
+            } else {
+              internal::merge_index_info(v, original[i]);
+              ++stats.duplicate_points;
+            }
+            vertex[i] = v;
+            vertex_grid.record(point[i], v);
+          }
+          done[w] = 2;
+          stack.push_back(w);
+        };
+        visit(level.nn[u]);
+        for(std::uint32_t c = children_start[u]; c < children_start[u + 1]; ++c)
+          visit(children[c]);
+      }
+    }
+  }
+  return stats;
+}
+
+} // namespace Delaunay_from_prediction
+} // namespace CGAL
+
+#endif // CGAL_DELAUNAY_FROM_PREDICTION_BRIO_DC_H

@@ -1,0 +1,413 @@
+// Copyright (c) 2026 Delaunay_from_prediction contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Author(s): Delaunay_from_prediction founding team
+//
+// Entry point: DT(S1) and DT(S2) from DT(S1 u S2) (B. Chazelle, O. Devillers, F. Hurtado,
+// M. Mora, V. Sacristan, M. Teillaud, "Splitting a Delaunay triangulation in linear time"):
+// the paper's randomized algorithm, and the faster default that inserts each part in the
+// spatial order DT(S)'s vertices already have.
+
+#ifndef CGAL_DELAUNAY_FROM_PREDICTION_SPLIT_H
+#define CGAL_DELAUNAY_FROM_PREDICTION_SPLIT_H
+
+#include <CGAL/Delaunay_from_prediction/Statistics.h>
+#include <CGAL/Delaunay_from_prediction/parameters.h>
+#include <CGAL/Delaunay_from_prediction/internal/random.h>
+#include <CGAL/Delaunay_from_prediction/internal/rebuild.h>
+#include <CGAL/Delaunay_from_prediction/internal/spanning_tree_insertion.h>
+
+#include <CGAL/Delaunay_triangulation_2.h>
+#include <CGAL/Triangulation_data_structure_2.h>
+#include <CGAL/Triangulation_vertex_base_with_info_2.h>
+#include <CGAL/number_utils.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <functional>
+#include <limits>
+#include <queue>
+#include <type_traits>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Delaunay_from_prediction {
+
+/*!
+\ingroup PkgDelaunayFromPredictionRef
+How `split_delaunay()` computes the two triangulations (named parameter `split_method`). Both
+give exactly \cgal's triangulations of the two parts.
+*/
+enum class Split_method {
+  /// the default: currently `ordered`, the faster on every input measured (see the user manual).
+  automatic,
+  /// each part inserted, point by point, in the order of the input triangulation's vertices
+  /// when that order is spatially coherent (a triangulation built by \cgal's range insertion
+  /// keeps its points in spatial-sort order), otherwise in the package's grid order; each point
+  /// located from the previous point of its part. No sort when the order is coherent.
+  ordered,
+  /// the paper's randomized algorithm (Theorem 3): remove from a copy of the input, one by one,
+  /// the better of two random points (the one whose nearest neighbour in its own part a search
+  /// by growing circles over the current triangulation finds first), then reinsert the points
+  /// in reverse order into the triangulation of their part, each located by a walk from that
+  /// nearest neighbour. Expected \f$O(n)\f$ time, but the removals (\cgal's) cost more than the
+  /// insertions they spare: selectable for comparison.
+  randomized
+};
+
+namespace internal_np {
+enum split_method_t { split_method };
+} // namespace internal_np
+
+namespace parameters {
+/// chooses how `split_delaunay()` works, see `Split_method`.
+/// \param v a `Split_method`.
+/// \returns the named parameter `split_method` with value `v`.
+template <class T>
+CGAL::Named_function_parameters<T, internal_np::split_method_t> split_method(const T& v)
+{
+  return CGAL::Named_function_parameters<T, internal_np::split_method_t>(v);
+}
+/// same, chained in front of other named parameters.
+/// \param v the value of the parameter.
+/// \param np the named parameters to chain after it.
+/// \returns the chain `v`, then `np`.
+template <class T, class A, class B, class C>
+CGAL::Named_function_parameters<T, internal_np::split_method_t, CGAL::Named_function_parameters<A, B, C>>
+split_method(const T& v, const CGAL::Named_function_parameters<A, B, C>& np)
+{
+  return CGAL::Named_function_parameters<T, internal_np::split_method_t, CGAL::Named_function_parameters<A, B, C>>(
+      v, np);
+}
+} // namespace parameters
+
+namespace internal {
+
+// Whether the info() of a vertex of type To can be assigned that of a vertex of type From.
+template <class From, class To, class = void>
+struct can_copy_info : std::false_type {};
+template <class From, class To>
+struct can_copy_info<From, To, std::void_t<decltype(std::declval<To&>().info() = std::declval<const From&>().info())>>
+    : std::true_type {};
+
+template <class FromHandle, class ToHandle>
+void copy_info(FromHandle from, ToHandle to)
+{
+  if constexpr(can_copy_info<std::decay_t<decltype(*from)>, std::decay_t<decltype(*to)>>::value)
+    to->info() = from->info();
+}
+
+// Whether points listed in this order are spatially coherent: the median distance between
+// 255 sampled consecutive points is at most 4 times the side of the area per point of their
+// bounding box (CGAL's spatial sort, even in BRIO rounds, is; an order of insertion at random
+// is not).
+template <class PointAt>
+bool order_looks_spatial(std::size_t n, PointAt point_at)
+{
+  if(n < 4096)
+    return false; // small: sorting costs nothing
+  double xmin = CGAL::to_double(point_at(0).x()), xmax = xmin, ymin = CGAL::to_double(point_at(0).y()), ymax = ymin;
+  for(std::size_t k = 1; k < n; ++k) {
+    const double x = CGAL::to_double(point_at(k).x()), y = CGAL::to_double(point_at(k).y());
+    xmin = (std::min)(xmin, x);
+    xmax = (std::max)(xmax, x);
+    ymin = (std::min)(ymin, y);
+    ymax = (std::max)(ymax, y);
+  }
+  const double area_per_point = (xmax - xmin) * (ymax - ymin) / double(n);
+  std::vector<double> squared;
+  for(std::size_t s = 0; s < 255; ++s) {
+    const std::size_t k = s * (n - 1) / 255;
+    const double dx = CGAL::to_double(point_at(k).x()) - CGAL::to_double(point_at(k + 1).x());
+    const double dy = CGAL::to_double(point_at(k).y()) - CGAL::to_double(point_at(k + 1).y());
+    squared.push_back(dx * dx + dy * dy);
+  }
+  std::nth_element(squared.begin(), squared.begin() + 127, squared.end());
+  return squared[127] <= 16 * area_per_point;
+}
+
+// The paper's algorithm on the finite vertices of `dt` (dimension 2), indexed 0..n-1 in
+// container order: `part[k]` is 0 or 1. Returns, for k = 0..n-1, the point removed k-th and the
+// index of its nearest neighbour in its part among the points left (no_rank if none).
+template <class DT>
+void randomized_removal_order(const DT& dt, const std::vector<unsigned char>& part,
+                              std::vector<std::uint32_t>& removed, std::vector<std::uint32_t>& neighbour,
+                              std::uint64_t seed)
+{
+  using Gt = typename DT::Geom_traits;
+  using Vb = Triangulation_vertex_base_with_info_2<std::uint32_t, Gt>;
+  using Tds = Triangulation_data_structure_2<Vb>;
+  using Work = Delaunay_triangulation_2<Gt, Tds>;
+  using Work_vertex = typename Work::Vertex_handle;
+  using Point = typename DT::Point;
+  const std::size_t n = part.size();
+  // A copy of dt whose vertices carry their index (the infinite vertex: no_rank).
+  Work work(dt.geom_traits());
+  {
+    std::uint32_t next = 0;
+    const void* infinite = &*dt.infinite_vertex();
+    struct Convert_vertex
+    {
+      std::uint32_t* next;
+      const void* infinite;
+      typename Tds::Vertex operator()(const typename DT::Vertex& v) const
+      {
+        typename Tds::Vertex w;
+        w.set_point(v.point());
+        return w;
+      }
+      void operator()(const typename DT::Vertex& v, typename Tds::Vertex& w) const
+      {
+        w.info() = static_cast<const void*>(&v) == infinite ? no_rank : (*next)++;
+      }
+    };
+    struct Convert_face
+    {
+      typename Tds::Face operator()(const typename DT::Face&) const { return typename Tds::Face(); }
+      void operator()(const typename DT::Face&, typename Tds::Face&) const {}
+    };
+    const Work_vertex infinite_copy =
+        work.tds().copy_tds(dt.tds(), dt.infinite_vertex(), Convert_vertex{&next, infinite}, Convert_face{});
+    work.set_infinite_vertex(infinite_copy);
+  }
+  std::vector<Work_vertex> vertex(n);
+  for(auto v = work.finite_vertices_begin(); v != work.finite_vertices_end(); ++v)
+    vertex[v->info()] = v;
+  std::vector<std::uint32_t> alive(n), position(n);
+  for(std::size_t k = 0; k < n; ++k)
+    alive[k] = position[k] = std::uint32_t(k);
+  std::size_t left_in_part[2] = {0, 0};
+  for(unsigned char c : part)
+    ++left_in_part[c];
+  // A nearest-neighbour search by a growing circle (Section 3.3, step 2): the points of the
+  // current triangulation by increasing distance to p, each popped point's neighbours pushed;
+  // a point of p's part is not pushed but kept as the best candidate, and the search ends when
+  // no pushed point is nearer than the candidate (then no point of the part is: the paper's
+  // "Fact", points in a disk reach any point on its circle along Delaunay edges inside it).
+  // Distances are compared in double: the neighbour only chooses where a walk starts.
+  using Entry = std::pair<double, std::uint32_t>;
+  struct Search
+  {
+    std::vector<std::uint64_t> seen; // the number of the last search that pushed each vertex
+    std::vector<Entry> heap;         // a min-heap by distance
+    std::uint32_t p = no_rank, found = no_rank;
+    double best = 0; // distance to `found`
+    bool done = false;
+  };
+  std::uint64_t stamp = 0; // numbers the searches
+  auto squared_distance = [](const Point& a, const Point& b) {
+    const double dx = CGAL::to_double(a.x()) - CGAL::to_double(b.x());
+    const double dy = CGAL::to_double(a.y()) - CGAL::to_double(b.y());
+    return dx * dx + dy * dy;
+  };
+  auto push_neighbours = [&](Search& s, std::uint32_t u, std::uint64_t mark) {
+    auto w = work.incident_vertices(vertex[u]), end = w;
+    if(w == nullptr)
+      return;
+    const Point& centre = vertex[s.p]->point();
+    do {
+      const std::uint32_t x = w->info();
+      if(x != no_rank && s.seen[x] != mark) {
+        s.seen[x] = mark;
+        const double d = squared_distance(w->point(), centre);
+        if(part[x] == part[s.p]) {
+          if(d < s.best) {
+            s.best = d;
+            s.found = x;
+          }
+        } else if(d < s.best) {
+          s.heap.emplace_back(d, x);
+          std::push_heap(s.heap.begin(), s.heap.end(), std::greater<Entry>());
+        }
+      }
+    } while(++w != end);
+  };
+  auto start = [&](Search& s, std::uint32_t p, std::uint64_t mark) {
+    s.p = p;
+    s.heap.clear();
+    s.found = no_rank;
+    s.best = std::numeric_limits<double>::infinity();
+    s.done = left_in_part[part[p]] == 1; // alone in its part: nothing to find
+    s.seen[p] = mark;
+    if(!s.done)
+      push_neighbours(s, p, mark);
+  };
+  auto step = [&](Search& s, std::uint64_t mark) {
+    if(s.heap.empty() || !(s.heap.front().first < s.best)) {
+      s.done = true;
+      return;
+    }
+    std::pop_heap(s.heap.begin(), s.heap.end(), std::greater<Entry>());
+    const std::uint32_t u = s.heap.back().second;
+    s.heap.pop_back();
+    push_neighbours(s, u, mark);
+  };
+  Splitmix64 random{seed};
+  Search a, b; // two searches at a time, each with its own marks
+  a.seen.assign(n, 0);
+  b.seen.assign(n, 0);
+  removed.clear();
+  neighbour.clear();
+  for(std::size_t left = n; left > 0; --left) {
+    // Step 1: two random points; step 2: both searches in turn, the first to finish wins.
+    const std::uint32_t pa = alive[random.below(left)], pb = alive[random.below(left)];
+    start(a, pa, ++stamp);
+    Search* winner = &a;
+    if(pb != pa && !a.done) {
+      start(b, pb, ++stamp);
+      while(!a.done && !b.done) {
+        step(a, stamp - 1);
+        if(!a.done)
+          step(b, stamp);
+      }
+      winner = a.done ? &a : &b;
+    } else {
+      while(!a.done)
+        step(a, stamp);
+    }
+    const std::uint32_t p = winner->p;
+    removed.push_back(p);
+    neighbour.push_back(winner->found);
+    // Step 3: remove p (CGAL's removal from a Delaunay triangulation).
+    work.remove(vertex[p]);
+    --left_in_part[part[p]];
+    const std::uint32_t last = alive[left - 1];
+    alive[position[p]] = last;
+    position[last] = position[p];
+  }
+}
+
+} // namespace internal
+
+/*!
+\ingroup PkgDelaunayFromPredictionRef
+computes the Delaunay triangulations of the two parts of the vertices of a Delaunay
+triangulation: `dt1` receives \f$DT(S_1)\f$, the vertices `v` for which `is_in_first(v)` is
+`true`, and `dt2` receives \f$DT(S_2)\f$, the others (B. Chazelle, O. Devillers, F. Hurtado, M. Mora,
+V. Sacristan, M. Teillaud, "Splitting a Delaunay triangulation in linear time").
+
+By default (`Split_method::ordered`) each part is inserted in the order of `dt`'s vertices when
+that order is spatially coherent, as it is after \cgal's range insertion (so no sort is
+needed), and in the package's grid order otherwise; `Split_method::randomized` runs the paper's
+expected-linear-time algorithm (removal of the better of two random points, nearest neighbours
+by growing circles, reinsertion by walks from them), which measured slower (see the user
+manual). Either way the results are exactly \cgal's triangulations of the two parts.
+
+\tparam DT a `CGAL::Delaunay_triangulation_2<Gt, Tds>`.
+\tparam IsInFirst a function object taking a `DT::Vertex_handle` and returning a `bool`.
+\tparam DT1, DT2 `CGAL::Delaunay_triangulation_2<Gt, Tds1>` and `<Gt, Tds2>`, with the points of
+        `DT`. When the vertices of `DT` and of `DT1` (`DT2`) both have an `info()` and the first
+        is assignable to the second, it is copied.
+\tparam NamedParameters a sequence of named parameters.
+
+\param dt the input triangulation; not modified.
+\param is_in_first tells the part of each finite vertex; called once per vertex, before anything
+       is modified.
+\param dt1 receives \f$DT(S_1)\f$; cleared first.
+\param dt2 receives \f$DT(S_2)\f$; cleared first.
+\param np optional named parameters among the following ones:
+\cgalNamedParamsBegin
+  \cgalParamNBegin{split_method}
+    \cgalParamDescription{how the triangulations are computed}
+    \cgalParamType{`Split_method`}
+    \cgalParamDefault{`Split_method::automatic`}
+  \cgalParamNEnd
+  \cgalParamNBegin{random_seed}
+    \cgalParamDescription{the seed of the random choices of `Split_method::randomized`}
+    \cgalParamType{`unsigned int`}
+    \cgalParamDefault{a fixed seed}
+  \cgalParamNEnd
+\cgalNamedParamsEnd
+
+\returns what the call did: `points_reinserted` (every vertex of `dt`); with
+         `Split_method::randomized` also `points_located`, `faces_visited` and `walk_fallbacks`
+         of the reinsertion walks.
+\throws Invalid_prediction if `dt1` or `dt2` is `dt`, or `dt1` is `dt2`. Then nothing is
+        changed. An exception thrown by `is_in_first` leaves `dt1` and `dt2` unchanged too.
+*/
+template <class DT, class IsInFirst, class DT1, class DT2,
+          class NamedParameters = parameters::Default_named_parameters>
+Statistics split_delaunay(const DT& dt, IsInFirst is_in_first, DT1& dt1, DT2& dt2,
+                          const NamedParameters& np = parameters::default_values())
+{
+  static_assert(std::is_same<typename DT::Point, typename DT1::Point>::value &&
+                    std::is_same<typename DT::Point, typename DT2::Point>::value,
+                "split_delaunay: the three triangulations must have the same point type");
+  using parameters::choose_parameter;
+  using parameters::get_parameter;
+  const void* const input = &dt;
+  if(input == static_cast<const void*>(&dt1) || input == static_cast<const void*>(&dt2) ||
+     static_cast<const void*>(&dt1) == static_cast<const void*>(&dt2))
+    throw Invalid_prediction("Delaunay_from_prediction: split_delaunay needs dt1 and dt2 to be two triangulations "
+                             "other than dt");
+  const Split_method method = choose_parameter(get_parameter(np, internal_np::split_method), Split_method::automatic);
+  const std::uint64_t seed = choose_parameter(get_parameter(np, CGAL::internal_np::random_seed), 0x5eed5117u);
+  using Vertex_handle = typename DT::Vertex_handle;
+  // The vertices in container order and their parts (is_in_first is called here, before any
+  // change).
+  // The points are copied too: read in container order, the vertices are read in memory order
+  // whatever the order of their points in the plane.
+  std::vector<Vertex_handle> source;
+  std::vector<typename DT::Point> point;
+  std::vector<unsigned char> part;
+  source.reserve(dt.number_of_vertices());
+  point.reserve(dt.number_of_vertices());
+  part.reserve(dt.number_of_vertices());
+  for(auto v = dt.finite_vertices_begin(); v != dt.finite_vertices_end(); ++v) {
+    source.push_back(v);
+    point.push_back(v->point());
+    part.push_back(is_in_first(Vertex_handle(v)) ? 0 : 1);
+  }
+  const std::size_t n = source.size();
+  Statistics stats;
+  stats.points_reinserted = n;
+  dt1.clear();
+  dt2.clear();
+  std::vector<typename DT1::Vertex_handle> in_first(method == Split_method::randomized ? n : 0);
+  std::vector<typename DT2::Vertex_handle> in_second(method == Split_method::randomized ? n : 0);
+  if(method == Split_method::randomized && dt.dimension() == 2) {
+    std::vector<std::uint32_t> removed, neighbour;
+    internal::randomized_removal_order(dt, part, removed, neighbour, seed);
+    // Step 6, for all the points in turn: reinsertion in reverse order of removal, each point
+    // located by a walk from its neighbour's vertex (inserted before it).
+    const std::size_t cap = internal::walk_cap(n);
+    auto point_at = [&](std::size_t k) -> const typename DT::Point& { return point[k]; };
+    internal::Vertex_grid<typename DT1::Vertex_handle> grid1(n, point_at);
+    internal::Vertex_grid<typename DT2::Vertex_handle> grid2(n, point_at);
+    std::vector<std::pair<typename DT1::Face_handle, int>> stack1;
+    std::vector<std::pair<typename DT2::Face_handle, int>> stack2;
+    auto reinsert = [&](std::uint32_t p, std::uint32_t q, auto& target, auto& vertex_of, auto& grid, auto& stack) {
+      using Target_vertex = typename std::decay_t<decltype(target)>::Vertex_handle;
+      const Target_vertex v = q == internal::no_rank
+                                  ? target.insert(point[p])
+                                  : internal::insert_walking_from(target, point[p], vertex_of[q], cap, grid, stack, stats);
+      internal::copy_info(source[p], v);
+      vertex_of[p] = v;
+      grid.record(point[p], v);
+    };
+    for(std::size_t k = n; k-- > 0;) {
+      if(part[removed[k]] == 0)
+        reinsert(removed[k], neighbour[k], dt1, in_first, grid1, stack1);
+      else
+        reinsert(removed[k], neighbour[k], dt2, in_second, grid2, stack2);
+    }
+    return stats;
+  }
+  // Split_method::ordered (and the randomized method below dimension 2).
+  const bool in_order =
+      internal::order_looks_spatial(n, [&](std::size_t k) -> const typename DT::Point& { return point[k]; });
+  std::vector<std::size_t> first, second;
+  for(std::size_t k = 0; k < n; ++k)
+    (part[k] == 0 ? first : second).push_back(k);
+  auto copy = [&](std::size_t k, auto v, bool) { internal::copy_info(source[k], v); };
+  internal::insert_by_index(dt1, point.begin(), first, copy, in_order);
+  internal::insert_by_index(dt2, point.begin(), second, copy, in_order);
+  return stats;
+}
+
+} // namespace Delaunay_from_prediction
+} // namespace CGAL
+
+#endif // CGAL_DELAUNAY_FROM_PREDICTION_SPLIT_H
