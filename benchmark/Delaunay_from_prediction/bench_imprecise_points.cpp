@@ -129,11 +129,9 @@ int main(int argc, char** argv)
   std::string csv_file;
   for(int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
-    if(a == "--n") {
-      sizes.clear();
-      for(const std::string& v : split(option_value(argc, argv, i)))
-        sizes.push_back(std::size_t(std::atof(v.c_str())));
-    } else if(a == "--cases")
+    if(a == "--n")
+      sizes = sizes_of(option_value(argc, argv, i));
+    else if(a == "--cases")
       cases = split(option_value(argc, argv, i));
     else if(a == "--reps")
       reps = std::max(1, std::atoi(option_value(argc, argv, i).c_str()));

@@ -31,11 +31,9 @@ int main(int argc, char** argv)
   std::uint64_t seed = 20261127;
   for(int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
-    if(a == "--n") {
-      sizes.clear();
-      for(const std::string& v : split(option_value(argc, argv, i)))
-        sizes.push_back(std::size_t(std::atof(v.c_str())));
-    } else if(a == "--reps")
+    if(a == "--n")
+      sizes = sizes_of(option_value(argc, argv, i));
+    else if(a == "--reps")
       reps = std::max(1, std::atoi(option_value(argc, argv, i).c_str()));
     else if(a == "--seed")
       seed = std::strtoull(option_value(argc, argv, i).c_str(), nullptr, 10);

@@ -373,6 +373,15 @@ inline std::string read_first(const char* file, const char* key)
   return "unknown";
 }
 
+// Sizes listed with commas, each read as a double ("1e5,1e6").
+inline std::vector<std::size_t> sizes_of(const std::string& list)
+{
+  std::vector<std::size_t> sizes;
+  for(const std::string& v : split(list))
+    sizes.push_back(std::size_t(std::atof(v.c_str())));
+  return sizes;
+}
+
 inline std::string local_date_time()
 {
   char date[64];

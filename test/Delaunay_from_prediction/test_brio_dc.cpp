@@ -173,13 +173,8 @@ void bad_input()
   for(int k = 0; k < 5; ++k)
     dt.insert(make_point<K>(k, k * k))->info() = 100 + std::size_t(k);
   const Snapshot<DT_with_info<K>> before(dt);
-  bool named = false;
-  try {
-    DFP::brio_dc_delaunay(points, dt);
-  } catch(const DFP::Invalid_prediction& e) {
-    named = std::string(e.what()).find("point 123") != std::string::npos;
-  }
-  DFP_CHECK(named);
+  const std::string message = exception_message<DFP::Invalid_prediction>([&] { DFP::brio_dc_delaunay(points, dt); });
+  DFP_CHECK_MSG(message.find("point 123") != std::string::npos, message);
   check_unchanged(dt, before);
 }
 

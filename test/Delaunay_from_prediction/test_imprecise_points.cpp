@@ -324,12 +324,8 @@ void bad_input()
   const auto centres = to_points<K>(d.centres);
   std::vector<double> radii = d.radii;
   auto throws_naming = [&](const auto& body, const std::string& words) {
-    try {
-      body();
-    } catch(const DFP::Invalid_prediction& e) {
-      return DFP_CHECK_MSG(std::string(e.what()).find(words) != std::string::npos, e.what());
-    }
-    return DFP_CHECK_MSG(false, "no exception");
+    const std::string message = exception_message<DFP::Invalid_prediction>(body);
+    return DFP_CHECK_MSG(message.find(words) != std::string::npos, message);
   };
   {
     Scope s("negative radius");

@@ -118,6 +118,19 @@ bool throws_exception(const F& body)
   return false;
 }
 
+// The message of the E that body() throws, or "(no exception)" if it returns; anything else
+// thrown propagates.
+template <class E, class F>
+std::string exception_message(const F& body)
+{
+  try {
+    body();
+  } catch(const E& e) {
+    return e.what();
+  }
+  return "(no exception)";
+}
+
 // Runs `body` in a child process, where a crash (a signal: a division by zero, a null
 // dereference, a CGAL assertion) cannot take the whole test down; true if it returned or
 // threw std::invalid_argument. Where fork() is not available, runs it here.

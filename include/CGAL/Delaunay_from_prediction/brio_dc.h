@@ -284,7 +284,6 @@ Statistics brio_dc_delaunay(const PointRange& points, DT& dt, const NamedParamet
     return stats;
   // The points, gathered (every later pass reads them by index).
   std::vector<Point> point(point_begin, point_begin + std::ptrdiff_t(n));
-  auto point_at = [&](std::uint32_t i) -> const Point& { return point[i]; };
 
   // The gradation, from S_0 = P down: each level in grid order, with its nearest-neighbour
   // graph (positions within the level) and which of its points are in the next sample.
@@ -336,17 +335,15 @@ Statistics brio_dc_delaunay(const PointRange& points, DT& dt, const NamedParamet
       // neighbours were approximate); one point of each pair goes to the sample, every other
       // point with probability 1/2.
       level.in_next.assign(m, 2); // 2: not decided
-      std::vector<std::uint32_t> state(m, 0), path;
+      std::vector<std::uint32_t> state(m, 0);
       for(std::uint32_t s = 0; s < m; ++s) {
         if(state[s] != 0)
           continue;
         // Follow the neighbours from s until a point seen before: on this path (a new cycle)
         // or in an earlier one (a tree hanging from a known component).
-        path.clear();
         std::uint32_t u = s;
         while(state[u] == 0) {
           state[u] = s + 1;
-          path.push_back(u);
           u = level.nn[u];
         }
         if(state[u] == s + 1) { // a new cycle through u: match u with its neighbour
@@ -372,13 +369,8 @@ Statistics brio_dc_delaunay(const PointRange& points, DT& dt, const NamedParamet
       const std::size_t count = dt.number_of_vertices();
       const Vertex_handle v = dt.insert(point[i], hint);
       hint = v->face();
-      const std::size_t caller_index = original.empty() ? i : original[i];
-      if(dt.number_of_vertices() != count) {
-        internal::set_index_info(v, caller_index);
-      } else {
-        internal::merge_index_info(v, caller_index);
-        ++stats.duplicate_points;
-      }
+      internal::record_index_info(v, original.empty() ? i : original[i], dt.number_of_vertices() != count,
+                                  stats.duplicate_points);
       vertex[i] = v;
       vertex_grid.record(point[i], v);
     }
@@ -423,12 +415,7 @@ Statistics brio_dc_delaunay(const PointRange& points, DT& dt, const NamedParamet
             const std::size_t count = dt.number_of_vertices();
             const Vertex_handle v = internal::insert_walking_from(dt, point[i], vertex[level.members[u]], cap,
                                                                   vertex_grid, flip_stack, stats);
-            if(dt.number_of_vertices() != count) {
-              internal::set_index_info(v, original[i]);
-            } else {
-              internal::merge_index_info(v, original[i]);
-              ++stats.duplicate_points;
-            }
+            internal::record_index_info(v, original[i], dt.number_of_vertices() != count, stats.duplicate_points);
             vertex[i] = v;
             vertex_grid.record(point[i], v);
           }

@@ -39,46 +39,6 @@
 namespace CGAL {
 namespace Delaunay_from_prediction {
 
-/*!
-\ingroup PkgDelaunayFromPredictionRef
-The order in which `Imprecise_points_2` inserts the disks, in its preprocessing and in every
-instance (named parameter `disk_order`).
-*/
-enum class Disk_order {
-  /// the default: the package's biased randomized grid order of the centres (random rounds,
-  /// each sorted along a grid), the order of the paper's fastest experiment, where
-  /// consecutive insertions are near each other in memory.
-  spatial,
-  /// a uniformly random order: the order of the paper's analysis (Theorem 1).
-  random
-};
-
-namespace internal_np {
-enum disk_order_t { disk_order };
-} // namespace internal_np
-
-namespace parameters {
-/// chooses the insertion order of `Imprecise_points_2`, see `Disk_order`.
-/// \param v a `Disk_order`.
-/// \returns the named parameter `disk_order` with value `v`.
-template <class T>
-CGAL::Named_function_parameters<T, internal_np::disk_order_t> disk_order(const T& v)
-{
-  return CGAL::Named_function_parameters<T, internal_np::disk_order_t>(v);
-}
-/// same, chained in front of other named parameters.
-/// \param v the value of the parameter.
-/// \param np the named parameters to chain after it.
-/// \returns the chain `v`, then `np`.
-template <class T, class A, class B, class C>
-CGAL::Named_function_parameters<T, internal_np::disk_order_t, CGAL::Named_function_parameters<A, B, C>>
-disk_order(const T& v, const CGAL::Named_function_parameters<A, B, C>& np)
-{
-  return CGAL::Named_function_parameters<T, internal_np::disk_order_t, CGAL::Named_function_parameters<A, B, C>>(v,
-                                                                                                                 np);
-}
-} // namespace parameters
-
 namespace internal {
 
 template <class T, class = void>
@@ -271,12 +231,7 @@ public:
       const Vertex_handle v = r == 0 ? dt.insert(q)
                                      : internal::insert_walking_from(dt, q, vertex[hint_rank_[r]], cap, grid,
                                                                      flip_stack, stats);
-      if(dt.number_of_vertices() != count) {
-        internal::set_index_info(v, i);
-      } else {
-        internal::merge_index_info(v, i);
-        ++stats.duplicate_points;
-      }
+      internal::record_index_info(v, i, dt.number_of_vertices() != count, stats.duplicate_points);
       vertex[r] = v;
       grid.record(q, v);
     }
@@ -336,20 +291,17 @@ private:
     for(std::size_t r = 0; r < n; ++r)
       rank_[order_[r]] = std::uint32_t(r);
     // The box of the disks, for the grid of fallback locations of the instances.
-    double max_radius = 0;
-    for(std::size_t i = 0; i < n; ++i) {
-      const double x = CGAL::to_double(centre_[i].x()), y = CGAL::to_double(centre_[i].y());
-      xmin_ = i == 0 ? x : (std::min)(xmin_, x);
-      xmax_ = i == 0 ? x : (std::max)(xmax_, x);
-      ymin_ = i == 0 ? y : (std::min)(ymin_, y);
-      ymax_ = i == 0 ? y : (std::max)(ymax_, y);
-      max_radius = (std::max)(max_radius, CGAL::to_double(radius_[i]));
-    }
-    if(max_radius < std::numeric_limits<double>::infinity()) {
-      xmin_ -= max_radius;
-      xmax_ += max_radius;
-      ymin_ -= max_radius;
-      ymax_ += max_radius;
+    if(n != 0) {
+      double max_radius = 0;
+      for(std::size_t i = 0; i < n; ++i)
+        max_radius = (std::max)(max_radius, CGAL::to_double(radius_[i]));
+      if(!(max_radius < std::numeric_limits<double>::infinity())) // a radius too large for double
+        max_radius = 0;
+      const internal::Box box = internal::bounding_box(n, [&](std::size_t i) -> const Point& { return centre_[i]; });
+      xmin_ = box.xmin - max_radius;
+      xmax_ = box.xmax + max_radius;
+      ymin_ = box.ymin - max_radius;
+      ymax_ = box.ymax + max_radius;
     }
     compute_hints();
   }

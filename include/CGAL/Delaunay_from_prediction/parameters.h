@@ -20,6 +20,8 @@ enum max_flips_t { max_flips };
 enum screen_prediction_t { screen_prediction };
 enum strategy_t { strategy };
 enum region_size_t { region_size };
+enum disk_order_t { disk_order };
+enum split_method_t { split_method };
 } // namespace internal_np
 
 /*!
@@ -56,6 +58,42 @@ enum class Strategy {
   /// paper's model). Reported as a fallback, as `rebuild` is. Slower than the default on
   /// every prediction measured (see the user manual): selectable for comparison.
   spanning_tree
+};
+
+/*!
+\ingroup PkgDelaunayFromPredictionRef
+The order in which `Imprecise_points_2` inserts the disks, in its preprocessing and in every
+instance (named parameter `disk_order`).
+*/
+enum class Disk_order {
+  /// the default: the package's biased randomized grid order of the centres (random rounds,
+  /// each sorted along a grid), the order of the paper's fastest experiment, where
+  /// consecutive insertions are near each other in memory.
+  spatial,
+  /// a uniformly random order: the order of the paper's analysis (Theorem 1).
+  random
+};
+
+/*!
+\ingroup PkgDelaunayFromPredictionRef
+How `split_delaunay()` computes the two triangulations (named parameter `split_method`). Both
+give exactly \cgal's triangulations of the two parts.
+*/
+enum class Split_method {
+  /// the default: currently `ordered`, the faster on every input measured (see the user manual).
+  automatic,
+  /// each part inserted, point by point, in the order of the input triangulation's vertices
+  /// when that order is spatially coherent (a triangulation built by \cgal's range insertion
+  /// keeps its points in spatial-sort order), otherwise in the package's grid order; each point
+  /// located from the previous point of its part. No sort when the order is coherent.
+  ordered,
+  /// the paper's randomized algorithm (Theorem 3): remove from a copy of the input, one by one,
+  /// the better of two random points (the one whose nearest neighbour in its own part a search
+  /// by growing circles over the current triangulation finds first), then reinsert the points
+  /// in reverse order into the triangulation of their part, each located by a walk from that
+  /// nearest neighbour. Expected \f$O(n)\f$ time, but the removals (\cgal's) cost more than the
+  /// insertions they spare: selectable for comparison.
+  randomized
 };
 
 /// \ingroup PkgDelaunayFromPredictionRef
@@ -146,6 +184,44 @@ region_size(const T& v, const CGAL::Named_function_parameters<A, B, C>& np)
                                          CGAL::Named_function_parameters<A, B, C>>(v, np);
 }
 
+/// chooses the insertion order of `Imprecise_points_2`, see `Disk_order`.
+/// \param v a `Disk_order`.
+/// \returns the named parameter `disk_order` with value `v`.
+template <class T>
+CGAL::Named_function_parameters<T, internal_np::disk_order_t> disk_order(const T& v)
+{
+  return CGAL::Named_function_parameters<T, internal_np::disk_order_t>(v);
+}
+/// same, chained in front of other named parameters.
+/// \param v the value of the parameter.
+/// \param np the named parameters to chain after it.
+/// \returns the chain `v`, then `np`.
+template <class T, class A, class B, class C>
+CGAL::Named_function_parameters<T, internal_np::disk_order_t, CGAL::Named_function_parameters<A, B, C>>
+disk_order(const T& v, const CGAL::Named_function_parameters<A, B, C>& np)
+{
+  return CGAL::Named_function_parameters<T, internal_np::disk_order_t, CGAL::Named_function_parameters<A, B, C>>(v,
+                                                                                                                 np);
+}
+/// chooses how `split_delaunay()` works, see `Split_method`.
+/// \param v a `Split_method`.
+/// \returns the named parameter `split_method` with value `v`.
+template <class T>
+CGAL::Named_function_parameters<T, internal_np::split_method_t> split_method(const T& v)
+{
+  return CGAL::Named_function_parameters<T, internal_np::split_method_t>(v);
+}
+/// same, chained in front of other named parameters.
+/// \param v the value of the parameter.
+/// \param np the named parameters to chain after it.
+/// \returns the chain `v`, then `np`.
+template <class T, class A, class B, class C>
+CGAL::Named_function_parameters<T, internal_np::split_method_t, CGAL::Named_function_parameters<A, B, C>>
+split_method(const T& v, const CGAL::Named_function_parameters<A, B, C>& np)
+{
+  return CGAL::Named_function_parameters<T, internal_np::split_method_t, CGAL::Named_function_parameters<A, B, C>>(
+      v, np);
+}
 } // namespace parameters
 } // namespace Delaunay_from_prediction
 } // namespace CGAL

@@ -35,54 +35,6 @@
 namespace CGAL {
 namespace Delaunay_from_prediction {
 
-/*!
-\ingroup PkgDelaunayFromPredictionRef
-How `split_delaunay()` computes the two triangulations (named parameter `split_method`). Both
-give exactly \cgal's triangulations of the two parts.
-*/
-enum class Split_method {
-  /// the default: currently `ordered`, the faster on every input measured (see the user manual).
-  automatic,
-  /// each part inserted, point by point, in the order of the input triangulation's vertices
-  /// when that order is spatially coherent (a triangulation built by \cgal's range insertion
-  /// keeps its points in spatial-sort order), otherwise in the package's grid order; each point
-  /// located from the previous point of its part. No sort when the order is coherent.
-  ordered,
-  /// the paper's randomized algorithm (Theorem 3): remove from a copy of the input, one by one,
-  /// the better of two random points (the one whose nearest neighbour in its own part a search
-  /// by growing circles over the current triangulation finds first), then reinsert the points
-  /// in reverse order into the triangulation of their part, each located by a walk from that
-  /// nearest neighbour. Expected \f$O(n)\f$ time, but the removals (\cgal's) cost more than the
-  /// insertions they spare: selectable for comparison.
-  randomized
-};
-
-namespace internal_np {
-enum split_method_t { split_method };
-} // namespace internal_np
-
-namespace parameters {
-/// chooses how `split_delaunay()` works, see `Split_method`.
-/// \param v a `Split_method`.
-/// \returns the named parameter `split_method` with value `v`.
-template <class T>
-CGAL::Named_function_parameters<T, internal_np::split_method_t> split_method(const T& v)
-{
-  return CGAL::Named_function_parameters<T, internal_np::split_method_t>(v);
-}
-/// same, chained in front of other named parameters.
-/// \param v the value of the parameter.
-/// \param np the named parameters to chain after it.
-/// \returns the chain `v`, then `np`.
-template <class T, class A, class B, class C>
-CGAL::Named_function_parameters<T, internal_np::split_method_t, CGAL::Named_function_parameters<A, B, C>>
-split_method(const T& v, const CGAL::Named_function_parameters<A, B, C>& np)
-{
-  return CGAL::Named_function_parameters<T, internal_np::split_method_t, CGAL::Named_function_parameters<A, B, C>>(
-      v, np);
-}
-} // namespace parameters
-
 namespace internal {
 
 // Whether the info() of a vertex of type To can be assigned that of a vertex of type From.
@@ -108,15 +60,8 @@ bool order_looks_spatial(std::size_t n, PointAt point_at)
 {
   if(n < 4096)
     return false; // small: sorting costs nothing
-  double xmin = CGAL::to_double(point_at(0).x()), xmax = xmin, ymin = CGAL::to_double(point_at(0).y()), ymax = ymin;
-  for(std::size_t k = 1; k < n; ++k) {
-    const double x = CGAL::to_double(point_at(k).x()), y = CGAL::to_double(point_at(k).y());
-    xmin = (std::min)(xmin, x);
-    xmax = (std::max)(xmax, x);
-    ymin = (std::min)(ymin, y);
-    ymax = (std::max)(ymax, y);
-  }
-  const double area_per_point = (xmax - xmin) * (ymax - ymin) / double(n);
+  const Box box = bounding_box(n, point_at);
+  const double area_per_point = (box.xmax - box.xmin) * (box.ymax - box.ymin) / double(n);
   std::vector<double> squared;
   for(std::size_t s = 0; s < 255; ++s) {
     const std::size_t k = s * (n - 1) / 255;

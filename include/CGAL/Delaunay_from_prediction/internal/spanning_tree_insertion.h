@@ -230,16 +230,8 @@ public:
   {
     if(n == 0)
       return;
-    double xmin = CGAL::to_double(point_at(0).x()), xmax = xmin;
-    double ymin = CGAL::to_double(point_at(0).y()), ymax = ymin;
-    for(std::size_t k = 1; k < n; ++k) {
-      const double x = CGAL::to_double(point_at(k).x()), y = CGAL::to_double(point_at(k).y());
-      xmin = (std::min)(xmin, x);
-      xmax = (std::max)(xmax, x);
-      ymin = (std::min)(ymin, y);
-      ymax = (std::max)(ymax, y);
-    }
-    set_up(n, xmin, xmax, ymin, ymax);
+    const Box box = bounding_box(n, point_at);
+    set_up(n, box.xmin, box.xmax, box.ymin, box.ymax);
   }
 
   // A grid for n points in the box [xmin, xmax] x [ymin, ymax] (points outside it fall in
@@ -353,15 +345,8 @@ bool edges_look_random(PointIterator points, std::size_t n, const std::vector<st
 {
   if(n < 4096 || ends.empty())
     return false;
-  double xmin = CGAL::to_double(points[0].x()), xmax = xmin, ymin = CGAL::to_double(points[0].y()), ymax = ymin;
-  for(std::size_t k = 1; k < n; ++k) {
-    const double x = CGAL::to_double(points[k].x()), y = CGAL::to_double(points[k].y());
-    xmin = (std::min)(xmin, x);
-    xmax = (std::max)(xmax, x);
-    ymin = (std::min)(ymin, y);
-    ymax = (std::max)(ymax, y);
-  }
-  const double area_per_point = (xmax - xmin) * (ymax - ymin) / double(n);
+  const Box box = bounding_box(n, [&](std::size_t k) -> decltype(points[0]) { return points[k]; });
+  const double area_per_point = (box.xmax - box.xmin) * (box.ymax - box.ymin) / double(n);
   if(!(area_per_point > 0))
     return false;
   Splitmix64 random{seed};

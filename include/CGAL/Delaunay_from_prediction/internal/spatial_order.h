@@ -26,6 +26,27 @@ namespace CGAL {
 namespace Delaunay_from_prediction {
 namespace internal {
 
+// The bounding box of points 0..n-1 (n > 0), in double.
+struct Box
+{
+  double xmin, xmax, ymin, ymax;
+};
+template <class PointAt>
+Box bounding_box(std::size_t n, PointAt point_at)
+{
+  Box b;
+  b.xmin = b.xmax = CGAL::to_double(point_at(0).x());
+  b.ymin = b.ymax = CGAL::to_double(point_at(0).y());
+  for(std::size_t k = 1; k < n; ++k) {
+    const double x = CGAL::to_double(point_at(k).x()), y = CGAL::to_double(point_at(k).y());
+    b.xmin = (std::min)(b.xmin, x);
+    b.xmax = (std::max)(b.xmax, x);
+    b.ymin = (std::min)(b.ymin, y);
+    b.ymax = (std::max)(b.ymax, y);
+  }
+  return b;
+}
+
 // A grid cell with more points than this (the grids aim at four) is sorted again.
 constexpr std::size_t crowded_cell = 64;
 

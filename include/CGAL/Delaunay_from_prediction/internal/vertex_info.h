@@ -41,6 +41,19 @@ void merge_index_info(Vertex_handle v, std::size_t index)
       v->info() = index;
 }
 
+// The vertex `v` the insertion of the point of index `index` returned: a new vertex gets the
+// index, an existing one (a duplicate point) keeps the smaller index, and `duplicates` counts it.
+template <class Vertex_handle>
+void record_index_info(Vertex_handle v, std::size_t index, bool is_new, std::size_t& duplicates)
+{
+  if(is_new) {
+    set_index_info(v, index);
+  } else {
+    merge_index_info(v, index);
+    ++duplicates;
+  }
+}
+
 // A vertex at the same point as `v` goes: `v` keeps the smaller of their indices.
 template <class Vertex_handle>
 void merge_index_info_of(Vertex_handle v, Vertex_handle duplicate)
