@@ -41,10 +41,21 @@ namespace internal {
 // that order (no_rank for a single point). Each point's search reads rings of cells around
 // its cell until no nearer point can lie beyond, at most `budget` points past its own cell
 // (then the nearest point read is taken); ties go to the smaller position in the order.
-// Double precision and the budget make the graph approximate in rare cases: it only guides
-// the insertion, so that costs time, never correctness.
+// A search that reaches a refined cell reads only its subcells that meet the box of the
+// circle of the best candidate so far. Double precision and the budget make the graph
+// approximate in rare cases: it only guides the insertion, so that costs time, never
+// correctness. `grid_out`, if given, receives the grid (for the caller's searches).
+// A grid of nearest_neighbour_graph(): the points of cell c are positions start[c] ..
+// start[c + 1] - 1 of its order, cells row-major.
+struct Nng_cells
+{
+  double xmin = 0, ymin = 0, sx = 0, sy = 0;
+  std::size_t side_x = 1, side_y = 1;
+  std::vector<std::uint32_t> start;
+};
+
 inline void nearest_neighbour_graph(const double* xy, std::size_t m, std::vector<std::uint32_t>& order,
-                                    std::vector<std::uint32_t>& nn, int depth = 0)
+                                    std::vector<std::uint32_t>& nn, int depth = 0, Nng_cells* grid_out = nullptr)
 {
   constexpr std::size_t crowded = 32, budget = 512;
   order.resize(m);
@@ -104,6 +115,8 @@ inline void nearest_neighbour_graph(const double* xy, std::size_t m, std::vector
   }
   std::vector<double> best(m, std::numeric_limits<double>::infinity());
   std::vector<unsigned char> refined(cells, 0);
+  std::vector<std::uint32_t> sub_of; // the grid of each refined cell, in `sub`
+  std::vector<Nng_cells> sub;
   {
     std::vector<std::uint32_t> sub_order, sub_nn, moved;
     std::vector<double> sub_p;
@@ -112,7 +125,11 @@ inline void nearest_neighbour_graph(const double* xy, std::size_t m, std::vector
       if(count <= crowded || count == m || depth >= 6)
         continue;
       refined[c] = 1;
-      nearest_neighbour_graph(p.data() + 2 * first, count, sub_order, sub_nn, depth + 1);
+      if(sub_of.empty())
+        sub_of.assign(cells, no_rank);
+      sub_of[c] = std::uint32_t(sub.size());
+      sub.emplace_back();
+      nearest_neighbour_graph(p.data() + 2 * first, count, sub_order, sub_nn, depth + 1, &sub.back());
       moved.assign(order.begin() + std::ptrdiff_t(first), order.begin() + std::ptrdiff_t(first + count));
       sub_p.assign(p.begin() + std::ptrdiff_t(2 * first), p.begin() + std::ptrdiff_t(2 * (first + count)));
       for(std::size_t a = 0; a < count; ++a) {
@@ -174,7 +191,7 @@ inline void nearest_neighbour_graph(const double* xy, std::size_t m, std::vector
           run[dy + 1][1] = start[row + 2];
           total += run[dy + 1][1] - run[dy + 1][0];
         }
-        if(total <= budget) {
+        if(total <= 4 * crowded) { // else dense cells around: the rings below read less
           for(int t = 0; t < 3; ++t)
             for(std::uint32_t j = run[t][0]; j < run[t][1]; ++j)
               consider_in_order(j);
@@ -201,6 +218,34 @@ inline void nearest_neighbour_graph(const double* xy, std::size_t m, std::vector
               gx += (edge_row || gx == x1) ? 1 : (std::max)(1L, x1 - gx)) {
             any_cell = true;
             const std::size_t cell = std::size_t(gy) * side_x + std::size_t(gx);
+            if(refined[cell] && b < std::numeric_limits<double>::infinity()) {
+              // Only the subcells that meet the box around the circle of radius sqrt(b).
+              const Nng_cells& g = sub[sub_of[cell]];
+              const double radius = std::sqrt(b);
+              auto range = [](double lo, double hi, double origin, double scale, std::size_t side,
+                              std::size_t& first_cell, std::size_t& last_cell) {
+                const double top = double(side - 1);
+                const double a = (lo - origin) * scale, z = (hi - origin) * scale;
+                first_cell = std::size_t(a > 0 ? (std::min)(a, top) : 0);
+                last_cell = std::size_t(z > 0 ? (std::min)(z, top) : 0);
+                if(scale == 0) {
+                  first_cell = 0;
+                  last_cell = side - 1;
+                }
+              };
+              std::size_t gx0, gx1, gy0, gy1;
+              range(x - radius, x + radius, g.xmin, g.sx, g.side_x, gx0, gx1);
+              range(y - radius, y + radius, g.ymin, g.sy, g.side_y, gy0, gy1);
+              for(std::size_t sy_ = gy0; sy_ <= gy1 && read < budget; ++sy_) {
+                const std::uint32_t from = start[cell] + g.start[sy_ * g.side_x + gx0];
+                const std::uint32_t to = (std::min)(start[cell] + g.start[sy_ * g.side_x + gx1 + 1],
+                                                    std::uint32_t(from + (budget - read)));
+                for(std::uint32_t j = from; j < to; ++j)
+                  consider(j);
+                read += to - from;
+              }
+              continue;
+            }
             const std::uint32_t last = (std::min)(start[cell + 1], std::uint32_t(start[cell] + (budget - read)));
             for(std::uint32_t j = start[cell]; j < last; ++j)
               consider(j);
@@ -213,6 +258,15 @@ inline void nearest_neighbour_graph(const double* xy, std::size_t m, std::vector
       best[k] = b;
       nn[k] = bk;
     }
+  }
+  if(grid_out != nullptr) {
+    grid_out->xmin = xmin;
+    grid_out->ymin = ymin;
+    grid_out->sx = sx;
+    grid_out->sy = sy;
+    grid_out->side_x = side_x;
+    grid_out->side_y = side_y;
+    grid_out->start.swap(start);
   }
 }
 
