@@ -30,8 +30,8 @@ public:
 /*!
 \ingroup PkgDelaunayFromPredictionRef
 Reports what a call of `delaunay_from_prediction()`, `make_delaunay()`,
-`delaunay_from_predicted_edges()`, `delaunay_from_spanning_graph()` or
-`Imprecise_points_2::triangulate()` did. Every member is
+`delaunay_from_predicted_edges()`, `delaunay_from_spanning_graph()`,
+`Imprecise_points_2::triangulate()`, `split_delaunay()` or `brio_dc_delaunay()` did. Every member is
 filled at negligible cost; members a call has no use for stay 0.
 */
 struct Statistics
@@ -88,7 +88,8 @@ struct Statistics
   /// `delaunay_from_spanning_graph()` and the functions built on it: number of edges read.
   std::size_t edges_in = 0;
   /// number of points located by a walk from a vertex already inserted (the spanning-tree
-  /// insertion of Section 3 of the paper; the hints of `Imprecise_points_2`).
+  /// insertion of Section 3 of the paper; the hints of `Imprecise_points_2`; the neighbours of
+  /// `split_delaunay()` and `brio_dc_delaunay()`).
   std::size_t points_located = 0;
   /// number of faces those walks entered, fallback walks included: divided by
   /// `points_located`, the mean cost of a location.
@@ -97,7 +98,8 @@ struct Statistics
   /// started again from a vertex inserted near the point (a wrong edge of the tree, or a point
   /// far from its disk, mostly).
   std::size_t walk_fallbacks = 0;
-  /// number of rounds of the gradation (random samples) that inserted the points.
+  /// number of rounds of the gradation (random samples) that inserted the points (BrioDC: the
+  /// number of samples).
   std::size_t insertion_rounds = 0;
   /// why the prediction was not used as it is: empty when it was a triangulation of the
   /// points; otherwise a static string such as `"a face is degenerate"`.
