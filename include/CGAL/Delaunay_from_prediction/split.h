@@ -346,9 +346,34 @@ Statistics split_delaunay(const DT& dt, IsInFirst is_in_first, DT1& dt1, DT2& dt
   std::vector<std::size_t> first, second;
   for(std::size_t k = 0; k < n; ++k)
     (part[k] == 0 ? first : second).push_back(k);
-  auto copy = [&](std::size_t k, auto v, bool) { internal::copy_info(source[k], v); };
-  internal::insert_by_index(dt1, point.begin(), first, copy, in_order);
-  internal::insert_by_index(dt2, point.begin(), second, copy, in_order);
+  // Each part in its insertion order, its points and vertices gathered first: read in that
+  // order from `dt`'s order they would be cache misses the insertion waits for (at 1e6 points
+  // in random memory order, 0.80 s instead of 0.5 s).
+  auto insert_part = [&](auto& target, std::vector<std::size_t>& indices) {
+    if(!in_order)
+      internal::sort_along_grid(indices, [&](std::size_t k) -> const typename DT::Point& { return point[k]; }, true);
+    std::vector<typename DT::Point> gathered(indices.size());
+    std::vector<Vertex_handle> from(indices.size());
+    for(std::size_t j = 0; j < indices.size(); ++j) {
+      gathered[j] = point[indices[j]];
+      from[j] = source[indices[j]];
+    }
+    std::vector<std::size_t> local(indices.size());
+    for(std::size_t j = 0; j < local.size(); ++j)
+      local[j] = j;
+    internal::insert_by_index(
+        target, gathered.begin(), local,
+        [&](std::size_t j, auto v, bool) {
+#if defined(__GNUC__)
+          if(j + 16 < from.size())
+            __builtin_prefetch(&*from[j + 16]); // its info() is copied 16 insertions later
+#endif
+          internal::copy_info(from[j], v);
+        },
+        true);
+  };
+  insert_part(dt1, first);
+  insert_part(dt2, second);
   return stats;
 }
 
