@@ -290,9 +290,8 @@ Statistics split_delaunay(const DT& dt, IsInFirst is_in_first, DT1& dt1, DT2& dt
   const Split_method method = choose_parameter(get_parameter(np, internal_np::split_method), Split_method::automatic);
   const std::uint64_t seed = choose_parameter(get_parameter(np, CGAL::internal_np::random_seed), 0x5eed5117u);
   using Vertex_handle = typename DT::Vertex_handle;
-  // The vertices in container order and their parts (is_in_first is called here, before any
-  // change).
-  // The points are copied too: read in container order, the vertices are read in memory order
+  // The vertices in container order, their points and their parts (is_in_first is called
+  // here, before any change): in container order the vertices are read in memory order,
   // whatever the order of their points in the plane.
   std::vector<Vertex_handle> source;
   std::vector<typename DT::Point> point;
@@ -312,7 +311,7 @@ Statistics split_delaunay(const DT& dt, IsInFirst is_in_first, DT1& dt1, DT2& dt
   dt2.clear();
   std::vector<typename DT1::Vertex_handle> in_first(method == Split_method::randomized ? n : 0);
   std::vector<typename DT2::Vertex_handle> in_second(method == Split_method::randomized ? n : 0);
-  if(method == Split_method::randomized && dt.dimension() == 2) {
+  if(method == Split_method::randomized && dt.dimension() == 2 && n < std::size_t(internal::no_rank)) {
     std::vector<std::uint32_t> removed, neighbour;
     internal::randomized_removal_order(dt, part, removed, neighbour, seed);
     // Step 6, for all the points in turn: reinsertion in reverse order of removal, each point
@@ -340,7 +339,8 @@ Statistics split_delaunay(const DT& dt, IsInFirst is_in_first, DT1& dt1, DT2& dt
     }
     return stats;
   }
-  // Split_method::ordered (and the randomized method below dimension 2).
+  // Split_method::ordered (and the randomized method below dimension 2, or for 2^32 - 1
+  // vertices or more, beyond its 32-bit indices).
   const bool in_order =
       internal::order_looks_spatial(n, [&](std::size_t k) -> const typename DT::Point& { return point[k]; });
   std::vector<std::size_t> first, second;
