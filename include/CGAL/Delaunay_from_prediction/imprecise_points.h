@@ -328,7 +328,9 @@ private:
     for(std::size_t r = 0; r < n; ++r) {
       const Point& c = centre_[order_[r]];
       Vertex_handle start = grid.near(c);
-      if(start == Vertex_handle() || (previous != Vertex_handle() && closer(previous->point(), start->point(), c)))
+      if(start == Vertex_handle() ||
+         (previous != Vertex_handle() && internal::squared_distance_in_double(previous->point(), c) <
+                                             internal::squared_distance_in_double(start->point(), c)))
         start = previous;
       const std::size_t count = dt.number_of_vertices();
       const Vertex_handle v =
@@ -346,8 +348,11 @@ private:
         if(dt.dimension() > 0) {
           auto w = dt.incident_vertices(v), end = w;
           do {
-            if(!dt.is_infinite(w) && squared_distance(w->point(), c) < best_distance) {
-              best_distance = squared_distance(w->point(), c);
+            if(dt.is_infinite(w))
+              continue;
+            const double d = internal::squared_distance_in_double(w->point(), c);
+            if(d < best_distance) {
+              best_distance = d;
               best = w->info();
             }
           } while(++w != end);
@@ -359,17 +364,6 @@ private:
     }
   }
 
-  static double squared_distance(const Point& p, const Point& q)
-  {
-    const double dx = CGAL::to_double(p.x()) - CGAL::to_double(q.x());
-    const double dy = CGAL::to_double(p.y()) - CGAL::to_double(q.y());
-    return dx * dx + dy * dy;
-  }
-  // Whether a is nearer to c than b is (in double; for choosing a start only).
-  static bool closer(const Point& a, const Point& b, const Point& c)
-  {
-    return squared_distance(a, c) < squared_distance(b, c);
-  }
 
   Gt traits_;
   std::vector<Point> centre_;

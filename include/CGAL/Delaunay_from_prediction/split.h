@@ -142,11 +142,6 @@ void randomized_removal_order(const DT& dt, const std::vector<unsigned char>& pa
     bool done = false;
   };
   std::uint64_t stamp = 0; // numbers the searches
-  auto squared_distance = [](const Point& a, const Point& b) {
-    const double dx = CGAL::to_double(a.x()) - CGAL::to_double(b.x());
-    const double dy = CGAL::to_double(a.y()) - CGAL::to_double(b.y());
-    return dx * dx + dy * dy;
-  };
   auto push_neighbours = [&](Search& s, std::uint32_t u, std::uint64_t mark) {
     auto w = work.incident_vertices(vertex[u]), end = w;
     if(w == nullptr)
@@ -156,7 +151,7 @@ void randomized_removal_order(const DT& dt, const std::vector<unsigned char>& pa
       const std::uint32_t x = w->info();
       if(x != no_rank && s.seen[x] != mark) {
         s.seen[x] = mark;
-        const double d = squared_distance(w->point(), centre);
+        const double d = squared_distance_in_double(w->point(), centre);
         if(part[x] == part[s.p]) {
           if(d < s.best) {
             s.best = d;

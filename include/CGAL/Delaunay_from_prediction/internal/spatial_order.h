@@ -47,6 +47,16 @@ Box bounding_box(std::size_t n, PointAt point_at)
   return b;
 }
 
+// The squared distance of two points, in double: for choosing where a search starts, never
+// for a decision the result depends on.
+template <class Point>
+double squared_distance_in_double(const Point& a, const Point& b)
+{
+  const double dx = CGAL::to_double(a.x()) - CGAL::to_double(b.x());
+  const double dy = CGAL::to_double(a.y()) - CGAL::to_double(b.y());
+  return dx * dx + dy * dy;
+}
+
 // A grid cell with more points than this (the grids aim at four) is sorted again.
 constexpr std::size_t crowded_cell = 64;
 
