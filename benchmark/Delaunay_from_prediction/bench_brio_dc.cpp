@@ -4,8 +4,9 @@
 //
 // brio_dc_delaunay() (BrioDC) against CGAL's range insert of the same points, in the same run:
 // uniform, clustered and graded points (distribution_points()), medians of --reps runs with
-// the calls alternating, every result checked against CGAL's (face set signature). Also the
-// mean walk length along the nearest-neighbour graph and the number of samples.
+// the calls alternating, every result checked against CGAL's (face set signature). BrioDC runs
+// with the default sampling probability (1/8) and with the paper's (1/2). Also the mean walk
+// length along the nearest-neighbour graph and the number of samples (default probability).
 //
 // Usage: bench_brio_dc [--n 1e5,1e6] [--dists uniform,clustered,graded] [--reps 5] [--seed S]
 
@@ -39,23 +40,28 @@ int main(int argc, char** argv)
   const bool keep = keep_freed_memory();
   std::printf("# bench_brio_dc, %s, %s, malloc policy %s, medians of %d\n", local_date_time().c_str(),
               build_description().c_str(), keep ? "keep" : "default", reps);
-  std::printf("%-8s %-10s | %8s %8s | %6s | %8s %8s %7s\n", "n", "dist", "CGAL s", "BrioDC", "ratio", "faces/pt",
-              "fallback", "samples");
+  std::printf("%-8s %-10s | %8s %8s %6s | %8s %6s | %8s %8s %7s\n", "n", "dist", "CGAL s", "BrioDC", "ratio",
+              "p=1/2", "ratio", "faces/pt", "fallback", "samples");
   bool all_same = true;
   for(const std::size_t n : sizes) {
     for(const std::string& dist : dists) {
       const std::vector<Point> points = distribution_points(dist, n, salted_seed(0xb410, seed, dist, n));
-      std::vector<double> t_cgal, t_brio;
+      std::vector<double> t_cgal, t_brio, t_half;
       DFP::Statistics stats;
       for(int r = 0; r < reps; ++r) {
-        Signature reference, sig;
+        Signature reference, sig, sig_half;
         t_cgal.push_back(time_cgal(points, reference));
         DT dt;
         t_brio.push_back(time_call(dt, [&] { stats = DFP::brio_dc_delaunay(points, dt); }, sig));
-        all_same = all_same && sig == reference;
+        DT dt_half;
+        t_half.push_back(time_call(
+            dt_half, [&] { DFP::brio_dc_delaunay(points, dt_half, DFP::parameters::sample_probability(0.5)); },
+            sig_half));
+        all_same = all_same && sig == reference && sig_half == reference;
       }
-      const double cgal = median(t_cgal), ours = median(t_brio);
-      std::printf("%-8zu %-10s | %8.3f %8.3f | %6.2f | %8.2f %8zu %7zu\n", n, dist.c_str(), cgal, ours, cgal / ours,
+      const double cgal = median(t_cgal), ours = median(t_brio), half = median(t_half);
+      std::printf("%-8zu %-10s | %8.3f %8.3f %6.2f | %8.3f %6.2f | %8.2f %8zu %7zu\n", n, dist.c_str(), cgal, ours,
+                  cgal / ours, half, cgal / half,
                   double(stats.faces_visited) / double(std::max<std::size_t>(1, stats.points_located)),
                   stats.walk_fallbacks, stats.insertion_rounds);
       std::fflush(stdout);

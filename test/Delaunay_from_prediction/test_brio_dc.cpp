@@ -7,7 +7,8 @@
 // compared with CGAL's triangulation built from scratch with the same kernel (by coordinates
 // and by point indices): random, clustered and graded points, grids, co-circular, collinear
 // and duplicate points, huge and tiny coordinates, n < 3, several seeds; triangulation types
-// with and without info; the walks being short; bad input.
+// with and without info; sampling probabilities; the grid's nearest-neighbour graph against
+// brute force; the walks being short; bad input.
 
 #include <CGAL/Delaunay_from_prediction/brio_dc.h> // first: the header is self-contained
 
@@ -18,6 +19,9 @@
 #include <CGAL/Simple_cartesian.h>
 
 #include <cmath>
+#include <cstdint>
+#include <limits>
+#include <stdexcept>
 
 using namespace dfp_test;
 
@@ -40,15 +44,18 @@ struct Brio_dc_test
   CGAL::Random rng{6174};
 
   // Triangulates into a triangulation holding other points first, then compares with CGAL.
+  // A seed of 0 and a probability of 0 stand for the defaults.
   template <class DT = DT_with_info<K>>
-  DFP::Statistics run(const XYs& xy, bool exact = true, unsigned seed = 0)
+  DFP::Statistics run(const XYs& xy, bool exact = true, unsigned seed = 0, double probability = 0)
   {
     const Points points = to_points<K>(xy);
     DT dt;
     dt.insert(make_point<K>(-50., 7.));
     dt.insert(make_point<K>(-51., 7.));
-    const DFP::Statistics s = seed == 0 ? DFP::brio_dc_delaunay(points, dt)
-                                        : DFP::brio_dc_delaunay(points, dt, CGAL::parameters::random_seed(seed));
+    const DFP::Statistics s =
+        probability != 0 ? DFP::brio_dc_delaunay(points, dt, DFP::parameters::sample_probability(probability))
+        : seed == 0      ? DFP::brio_dc_delaunay(points, dt)
+                         : DFP::brio_dc_delaunay(points, dt, CGAL::parameters::random_seed(seed));
     if(exact) {
       check_is_cgal_delaunay(dt, points);
     } else {
@@ -136,6 +143,28 @@ struct Brio_dc_test
     }
   }
 
+  // Every sampling probability gives CGAL's triangulation; a larger one keeps more points a
+  // level, hence no fewer levels (and more from the smallest to the largest).
+  void sample_probabilities()
+  {
+    const XYs uniform = uniform_points(3000, rng), clustered = clustered_points(3000, rng);
+    const XYs grid = grid_points(30, 30, rng), duplicates = with_duplicates(uniform_points(400, rng), 200, rng);
+    std::size_t rounds_before = 0, fewest = 0;
+    for(const double probability : {1e-9, 0.125, 0.5, 1.0}) {
+      Scope s("sample_probability ", probability);
+      const std::size_t rounds = run(uniform, true, 0, probability).insertion_rounds;
+      DFP_CHECK_MSG(rounds >= rounds_before, rounds << " levels, " << rounds_before << " with a smaller probability");
+      if(rounds_before == 0)
+        fewest = rounds;
+      else if(probability == 1.0)
+        DFP_CHECK_MSG(rounds > fewest, rounds << " levels with probability 1, " << fewest << " with 1e-9");
+      rounds_before = rounds;
+      run(clustered, true, 0, probability);
+      run(grid, true, 0, probability);
+      run(duplicates, true, 0, probability);
+    }
+  }
+
   void triangulation_types()
   {
     Scope s("triangulation types");
@@ -162,6 +191,95 @@ void walks_are_short()
   }
 }
 
+// The grid's nearest-neighbour graph against a brute-force search: the same distance for
+// every point (the neighbour itself may differ among tied ones), `order` a permutation.
+void nearest_neighbour_graph_is_exact()
+{
+  CGAL::Random rng(21);
+  auto check = [](const XYs& points) {
+    const std::size_t m = points.size();
+    std::vector<double> xy;
+    for(const XY& p : points) {
+      xy.push_back(p.x);
+      xy.push_back(p.y);
+    }
+    std::vector<std::uint32_t> order, nn;
+    DFP::internal::nearest_neighbour_graph(xy.data(), m, order, nn);
+    DFP_CHECK(order.size() == m && nn.size() == m);
+    std::vector<unsigned char> seen(m, 0);
+    for(std::uint32_t o : order) {
+      DFP_CHECK(o < m && !seen[o]);
+      seen[o] = 1;
+    }
+    auto squared = [&](std::size_t a, std::size_t b) {
+      const double dx = points[a].x - points[b].x, dy = points[a].y - points[b].y;
+      return dx * dx + dy * dy;
+    };
+    std::size_t wrong = 0;
+    for(std::size_t k = 0; k < m; ++k) {
+      double nearest = std::numeric_limits<double>::infinity();
+      for(std::size_t j = 0; j < m; ++j)
+        if(j != order[k])
+          nearest = (std::min)(nearest, squared(order[k], j));
+      if(m < 2) {
+        DFP_CHECK(nn[k] == DFP::internal::no_rank);
+      } else if(nn[k] >= m || nn[k] == k || squared(order[k], order[nn[k]]) != nearest) {
+        ++wrong;
+      }
+    }
+    DFP_CHECK_MSG(wrong == 0, wrong << " of " << m << " points without their nearest neighbour");
+  };
+  for(std::size_t m : {0u, 1u, 2u, 3u, 50u, 3000u}) {
+    Scope s("uniform, m = ", m);
+    check(uniform_points(m, rng));
+  }
+  {
+    Scope s("clustered");
+    check(clustered_points(4000, rng, 3));
+  }
+  {
+    Scope s("graded");
+    check(graded_points(4000, rng));
+  }
+  {
+    Scope s("grid");
+    check(grid_points(50, 50, rng));
+  }
+  {
+    Scope s("collinear and vertical");
+    check(collinear_points(800, rng));
+    XYs xy;
+    for(int i = 0; i < 500; ++i)
+      xy.push_back({-1.0, double((i * 37) % 500)});
+    check(xy);
+  }
+  {
+    Scope s("duplicates");
+    check(with_duplicates(uniform_points(700, rng), 400, rng));
+  }
+  {
+    Scope s("dense clusters in refined cells, each among sparse points");
+    XYs xy = uniform_points(500, rng);
+    for(int c = 0; c < 4; ++c)
+      for(const XY& p : uniform_points(600, rng))
+        xy.push_back({0.2 + 0.2 * c + 1e-3 * p.x, 0.3 + 0.1 * c + 1e-3 * p.y});
+    shuffle(xy, rng);
+    check(xy);
+  }
+  {
+    // Refined cells within refined cells: a search from outside must descend, not read a
+    // crowded subcell whole (that would exhaust the search's budget).
+    Scope s("a cluster within a cluster, among sparse points");
+    XYs xy = uniform_points(400, rng);
+    for(const XY& p : uniform_points(600, rng))
+      xy.push_back({0.4 + 1e-3 * p.x, 0.6 + 1e-3 * p.y});
+    for(const XY& p : uniform_points(2000, rng))
+      xy.push_back({0.4005 + 1e-7 * p.x, 0.6005 + 1e-7 * p.y});
+    shuffle(xy, rng);
+    check(xy);
+  }
+}
+
 // A non-finite point throws Invalid_prediction naming it; the triangulation is unchanged.
 void bad_input()
 {
@@ -176,6 +294,15 @@ void bad_input()
   const std::string message = exception_message<DFP::Invalid_prediction>([&] { DFP::brio_dc_delaunay(points, dt); });
   DFP_CHECK_MSG(message.find("point 123") != std::string::npos, message);
   check_unchanged(dt, before);
+  // A sampling probability outside (0, 1]: std::invalid_argument naming it, nothing changed.
+  points[123] = make_point<K>(1., 2.);
+  for(const double probability : {0.0, -0.5, 1.5, std::nan("")}) {
+    Scope s("sample_probability ", probability);
+    const std::string bad = exception_message<std::invalid_argument>(
+        [&] { DFP::brio_dc_delaunay(points, dt, DFP::parameters::sample_probability(probability)); });
+    DFP_CHECK_MSG(bad.find("sample_probability") != std::string::npos, bad);
+    check_unchanged(dt, before);
+  }
 }
 
 int main()
@@ -185,6 +312,7 @@ int main()
     Brio_dc_test<CGAL::Epick> t;
     DFP_RUN(t.random_inputs());
     DFP_RUN(t.degenerate_inputs());
+    DFP_RUN(t.sample_probabilities());
     DFP_RUN(t.triangulation_types());
   }
   {
@@ -201,6 +329,7 @@ int main()
     DFP_RUN(t.run(uniform_points(2000, t.rng), false));
     DFP_RUN(t.run(jittered(grid_points(30, 30, t.rng), 1e-13, t.rng), false));
   }
+  DFP_RUN(nearest_neighbour_graph_is_exact());
   DFP_RUN(walks_are_short());
   DFP_RUN(bad_input());
   return finish("test_brio_dc");

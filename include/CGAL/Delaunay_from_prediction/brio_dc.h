@@ -25,6 +25,8 @@
 #include <cstdint>
 #include <iterator>
 #include <limits>
+#include <sstream>
+#include <stdexcept>
 #include <utility>
 #include <vector>
 
@@ -32,27 +34,101 @@ namespace CGAL {
 namespace Delaunay_from_prediction {
 namespace internal {
 
+// p[2k], p[2k + 1] = xy[2 order[k]], xy[2 order[k] + 1] for k < m. Out of line: inlined into
+// the graph's function below, GCC 12 vectorizes these random reads into a loop twice as slow.
+#if defined(__GNUC__) || defined(__clang__)
+__attribute__((noinline))
+#endif
+inline void gather_coordinates(const double* xy, const std::uint32_t* order, std::size_t m, double* p)
+{
+  for(std::size_t k = 0; k < m; ++k) {
+    const std::uint32_t o = order[k];
+    const double px = xy[2 * o], py = xy[2 * o + 1];
+    p[2 * k] = px;
+    p[2 * k + 1] = py;
+  }
+}
+
 // The nearest-neighbour graph of the points xy[0..m) (coordinates in double, x and y
 // interleaved), with a grid of about two points a cell over their bounding box, rows in
 // order; a cell holding more than 32 points (clusters, a density varying by orders of
 // magnitude) is refined by the same procedure on its points, up to depth 6. Writes to `order`
 // the points in the grid order (refined cells in their own grid order): order[k] is the input
 // position of the k-th point; and to `nn` the nearest neighbour of each, as a position in
-// that order (no_rank for a single point). Each point's search reads rings of cells around
-// its cell until no nearer point can lie beyond, at most `budget` points past its own cell
-// (then the nearest point read is taken); ties go to the smaller position in the order.
-// A search that reaches a refined cell reads only its subcells that meet the box of the
-// circle of the best candidate so far. Double precision and the budget make the graph
-// approximate in rare cases: it only guides the insertion, so that costs time, never
-// correctness. `grid_out`, if given, receives the grid (for the caller's searches).
+// that order (no_rank for a single point). Each point's search reads the 3 x 3 cells around
+// its own (when they hold at most 128 points), then rings of cells until no nearer point can
+// lie beyond, skipping the cells farther than the best candidate so far, at most `budget`
+// points past its own cell (then the nearest point read is taken: equal points by the
+// hundred); ties go to the smaller position in the order. A search that reaches a refined
+// cell reads it through its grid (read_grid_near()), only the subcells within the circle of
+// the best candidate. Double precision and the budget make the graph approximate in rare
+// cases: it only guides the insertion, so that costs time, never correctness. `grid_out`, if
+// given, receives the grid with its refined cells' grids (for the searches of its caller).
 // A grid of nearest_neighbour_graph(): the points of cell c are positions start[c] ..
-// start[c + 1] - 1 of its order, cells row-major.
+// start[c + 1] - 1 of its order, cells row-major; a refined cell c has its own grid
+// sub[sub_of[c]], whose positions count from start[c] (sub_of is empty when no cell is).
 struct Nng_cells
 {
   double xmin = 0, ymin = 0, sx = 0, sy = 0;
   std::size_t side_x = 1, side_y = 1;
   std::vector<std::uint32_t> start;
+  std::vector<std::uint32_t> sub_of;
+  std::vector<Nng_cells> sub;
 };
+
+// Calls consider(j) on the points of grid `g` (positions from `base`) that may be within
+// sqrt(b) of (x, y), b being the best squared distance so far (it shrinks as they are
+// read): row by row from the row nearest the point, in each row the cells that meet the
+// circle, refined cells through their own grids. So a dense grid next to a sparse point is
+// not read whole (with no candidate yet, the nearest row is read whole and gives one), and
+// the rows and cells visited are those the circle meets. Stops once `read` reaches `budget`.
+// Cell bounds get a rounding slack: a point's cell comes from a rounded division.
+template <class Consider>
+void read_grid_near(const Nng_cells& g, std::uint32_t base, double x, double y, const double& b,
+                    std::size_t& read, std::size_t budget, Consider& consider)
+{
+  const double row_height = g.sy > 0 ? 1 / g.sy : 0, column_width = g.sx > 0 ? 1 / g.sx : 0;
+  // Reads row `row` if it meets the circle; false if it lies beyond (rows past it too).
+  auto read_row = [&](std::size_t row) {
+    const double row_y0 = g.ymin + double(row) * row_height, slack = 1e-9 * row_height;
+    const double dy = (std::max)({0.0, row_y0 - slack - y, y - (row_y0 + row_height + slack)});
+    if(dy * dy > b)
+      return false;
+    const double w = std::sqrt(b - dy * dy) + 1e-9 * column_width; // infinite with no candidate
+    std::size_t cell = row * g.side_x, end = cell + g.side_x;
+    if(g.sx > 0) {
+      const double a0 = (x - w - g.xmin) * g.sx, a1 = (x + w - g.xmin) * g.sx;
+      end = cell + std::size_t(a1 > 0 ? (std::min)(a1, double(g.side_x - 1)) : 0) + 1;
+      cell += std::size_t(a0 > 0 ? (std::min)(a0, double(g.side_x - 1)) : 0);
+    }
+    while(cell < end && read < budget) {
+      std::size_t run_end = end; // a run of cells not refined: one range of positions
+      if(!g.sub_of.empty())
+        for(run_end = cell; run_end < end && g.sub_of[run_end] == no_rank;)
+          ++run_end;
+      const std::uint32_t from = base + g.start[cell];
+      const std::uint32_t to = (std::min)(base + g.start[run_end], std::uint32_t(from + (budget - read)));
+      for(std::uint32_t j = from; j < to; ++j)
+        consider(j);
+      read += to - from;
+      cell = run_end;
+      if(cell < end && read < budget) {
+        read_grid_near(g.sub[g.sub_of[cell]], base + g.start[cell], x, y, b, read, budget, consider);
+        ++cell;
+      }
+    }
+    return true;
+  };
+  // From the row nearest the point up, then down, each way until a row beyond the circle.
+  const double fy = (y - g.ymin) * g.sy;
+  const std::size_t near_row = std::size_t(fy > 0 ? (std::min)(fy, double(g.side_y - 1)) : 0);
+  for(std::size_t row = near_row; row < g.side_y && read < budget; ++row)
+    if(!read_row(row))
+      break;
+  for(std::size_t row = near_row; row > 0 && read < budget; --row)
+    if(!read_row(row - 1))
+      break;
+}
 
 inline void nearest_neighbour_graph(const double* xy, std::size_t m, std::vector<std::uint32_t>& order,
                                     std::vector<std::uint32_t>& nn, int depth = 0, Nng_cells* grid_out = nullptr)
@@ -109,14 +185,12 @@ inline void nearest_neighbour_graph(const double* xy, std::size_t m, std::vector
       order[fill[key[k]]++] = std::uint32_t(k);
   }
   std::vector<double> p(2 * m); // coordinates in grid order
-  for(std::size_t k = 0; k < m; ++k) {
-    p[2 * k] = xy[2 * order[k]];
-    p[2 * k + 1] = xy[2 * order[k] + 1];
-  }
+  gather_coordinates(xy, order.data(), m, p.data());
   std::vector<double> best(m, std::numeric_limits<double>::infinity());
   std::vector<unsigned char> refined(cells, 0);
-  std::vector<std::uint32_t> sub_of; // the grid of each refined cell, in `sub`
-  std::vector<Nng_cells> sub;
+  Nng_cells grid; // this grid's refined cells (the rest is filled in at the end)
+  std::vector<std::uint32_t>& sub_of = grid.sub_of;
+  std::vector<Nng_cells>& sub = grid.sub;
   {
     std::vector<std::uint32_t> sub_order, sub_nn, moved;
     std::vector<double> sub_p;
@@ -150,20 +224,14 @@ inline void nearest_neighbour_graph(const double* xy, std::size_t m, std::vector
   for(std::size_t c = 0; c < cells; ++c) {
     const long cx = long(c % side_x), cy = long(c / side_x);
     const double cell_x0 = xmin + double(cx) * cell_width, cell_y0 = ymin + double(cy) * cell_height;
-    const bool interior = cx > 0 && cy > 0 && cx + 1 < long(side_x) && cy + 1 < long(side_y);
+    // The 3 x 3 cells around (fewer at the grid's sides): three runs of the grid order.
+    const std::size_t col0 = std::size_t(cx > 0 ? cx - 1 : 0), col1 = (std::min)(std::size_t(cx) + 1, side_x - 1);
+    const std::size_t row0 = std::size_t(cy > 0 ? cy - 1 : 0), row1 = (std::min)(std::size_t(cy) + 1, side_y - 1);
     for(std::uint32_t k = start[c]; k < start[c + 1]; ++k) {
       const double x = p[2 * k], y = p[2 * k + 1];
       double b = best[k];
       std::uint32_t bk = nn[k];
-      // Branch-free: whether a candidate is nearer is not predictable. Candidates read in
-      // increasing position need only the strict comparison for the tie rule.
-      auto consider_in_order = [&](std::uint32_t j) {
-        const double dx = p[2 * j] - x, dy = p[2 * j + 1] - y;
-        const double d = j != k ? dx * dx + dy * dy : std::numeric_limits<double>::infinity();
-        const bool nearer = d < b;
-        b = nearer ? d : b;
-        bk = nearer ? j : bk;
-      };
+      // Branch-free: whether a candidate is nearer is not predictable.
       auto consider = [&](std::uint32_t j) {
         const double dx = p[2 * j] - x, dy = p[2 * j + 1] - y;
         const double d = j != k ? dx * dx + dy * dy : std::numeric_limits<double>::infinity();
@@ -181,20 +249,31 @@ inline void nearest_neighbour_graph(const double* xy, std::size_t m, std::vector
       long r = 1;
       std::size_t read = 0;
       bool searched = false;
-      if(interior && !refined[c]) {
-        // The common case: the 3 x 3 cells around are three runs of the grid order (rows).
+      if(!refined[c]) {
+        // The common case: the cells around are at most three runs of the grid order (rows).
         std::uint32_t run[3][2];
-        std::size_t total = 0;
-        for(int dy = -1; dy <= 1; ++dy) {
-          const std::size_t row = std::size_t(cy + dy) * side_x + std::size_t(cx);
-          run[dy + 1][0] = start[row - 1];
-          run[dy + 1][1] = start[row + 2];
-          total += run[dy + 1][1] - run[dy + 1][0];
+        std::size_t total = 0, runs = 0;
+        for(std::size_t row = row0; row <= row1; ++row, ++runs) {
+          run[runs][0] = start[row * side_x + col0];
+          run[runs][1] = start[row * side_x + col1 + 1];
+          total += run[runs][1] - run[runs][0];
         }
         if(total <= 4 * crowded) { // else dense cells around: the rings below read less
-          for(int t = 0; t < 3; ++t)
-            for(std::uint32_t j = run[t][0]; j < run[t][1]; ++j)
-              consider_in_order(j);
+          // On copies of b and bk: `consider` passes their addresses on, which would keep
+          // them in memory in this, the hottest loop. Candidates read in increasing position
+          // need only the strict comparison for the tie rule.
+          double fast_b = b;
+          std::uint32_t fast_bk = bk;
+          for(std::size_t t = 0; t < runs; ++t)
+            for(std::uint32_t j = run[t][0]; j < run[t][1]; ++j) {
+              const double dx = p[2 * j] - x, dy = p[2 * j + 1] - y;
+              const double d = j != k ? dx * dx + dy * dy : std::numeric_limits<double>::infinity();
+              const bool nearer = d < fast_b;
+              fast_b = nearer ? d : fast_b;
+              fast_bk = nearer ? j : fast_bk;
+            }
+          b = fast_b;
+          bk = fast_bk;
           searched = b <= (shorter + margin) * (shorter + margin);
           r = 2;
           read = total;
@@ -217,33 +296,18 @@ inline void nearest_neighbour_graph(const double* xy, std::size_t m, std::vector
           for(long gx = (std::max)(0L, x0); gx <= (std::min)(long(side_x) - 1, x1) && read < budget;
               gx += (edge_row || gx == x1) ? 1 : (std::max)(1L, x1 - gx)) {
             any_cell = true;
+            // A cell farther than the best candidate is skipped (its box enlarged by a rounding
+            // slack: a point's cell comes from a rounded division).
+            const double bx = xmin + double(gx) * cell_width, by = ymin + double(gy) * cell_height;
+            const double ex = 1e-9 * cell_width, ey = 1e-9 * cell_height;
+            const double ddx = (std::max)({0.0, bx - ex - x, x - (bx + cell_width + ex)});
+            const double ddy = (std::max)({0.0, by - ey - y, y - (by + cell_height + ey)});
+            const double cell_distance2 = ddx * ddx + ddy * ddy;
+            if(cell_distance2 > b)
+              continue;
             const std::size_t cell = std::size_t(gy) * side_x + std::size_t(gx);
-            if(refined[cell] && b < std::numeric_limits<double>::infinity()) {
-              // Only the subcells that meet the box around the circle of radius sqrt(b).
-              const Nng_cells& g = sub[sub_of[cell]];
-              const double radius = std::sqrt(b);
-              auto range = [](double lo, double hi, double origin, double scale, std::size_t side,
-                              std::size_t& first_cell, std::size_t& last_cell) {
-                const double top = double(side - 1);
-                const double a = (lo - origin) * scale, z = (hi - origin) * scale;
-                first_cell = std::size_t(a > 0 ? (std::min)(a, top) : 0);
-                last_cell = std::size_t(z > 0 ? (std::min)(z, top) : 0);
-                if(scale == 0) {
-                  first_cell = 0;
-                  last_cell = side - 1;
-                }
-              };
-              std::size_t gx0, gx1, gy0, gy1;
-              range(x - radius, x + radius, g.xmin, g.sx, g.side_x, gx0, gx1);
-              range(y - radius, y + radius, g.ymin, g.sy, g.side_y, gy0, gy1);
-              for(std::size_t sy_ = gy0; sy_ <= gy1 && read < budget; ++sy_) {
-                const std::uint32_t from = start[cell] + g.start[sy_ * g.side_x + gx0];
-                const std::uint32_t to = (std::min)(start[cell] + g.start[sy_ * g.side_x + gx1 + 1],
-                                                    std::uint32_t(from + (budget - read)));
-                for(std::uint32_t j = from; j < to; ++j)
-                  consider(j);
-                read += to - from;
-              }
+            if(refined[cell]) {
+              read_grid_near(sub[sub_of[cell]], start[cell], x, y, b, read, budget, consider);
               continue;
             }
             const std::uint32_t last = (std::min)(start[cell + 1], std::uint32_t(start[cell] + (budget - read)));
@@ -260,13 +324,14 @@ inline void nearest_neighbour_graph(const double* xy, std::size_t m, std::vector
     }
   }
   if(grid_out != nullptr) {
-    grid_out->xmin = xmin;
-    grid_out->ymin = ymin;
-    grid_out->sx = sx;
-    grid_out->sy = sy;
-    grid_out->side_x = side_x;
-    grid_out->side_y = side_y;
-    grid_out->start.swap(start);
+    grid.xmin = xmin;
+    grid.ymin = ymin;
+    grid.sx = sx;
+    grid.sy = sy;
+    grid.side_x = side_x;
+    grid.side_y = side_y;
+    grid.start.swap(start);
+    *grid_out = std::move(grid);
   }
 }
 
@@ -276,20 +341,31 @@ inline void nearest_neighbour_graph(const double* xy, std::size_t m, std::vector
 \ingroup PkgDelaunayFromPredictionRef
 computes the Delaunay triangulation of `points` into `dt` by BrioDC (K. Buchin, W. Mulzer,
 "Linear-time Delaunay triangulations simplified"): a randomized incremental construction whose
-insertion order is a gradation of samples \f$P = S_0 \supseteq S_1 \supseteq \dots \supseteq S_\ell\f$,
-each \f$S_{i+1}\f$ holding every point of \f$S_i\f$ with probability 1/2 and at least one point of
-every connected component of the nearest-neighbour graph \f$N(S_i)\f$. The points of
-\f$S_i \setminus S_{i+1}\f$ are inserted component by component, each located by a walk that
-starts at the vertex of its neighbour in \f$N(S_i)\f$ inserted before it.
+insertion order is a gradation of samples \f$P = S_0 \supseteq S_1 \supseteq \dots \supseteq S_\ell\f$.
+On the cycle of every connected component of the nearest-neighbour graph \f$N(S_i)\f$ two
+points are matched, and \f$S_{i+1}\f$ holds one of them, chosen at random (so it meets every
+component), and every other point of \f$S_i\f$ with probability \f$q\f$ (named parameter
+`sample_probability`). The points of \f$S_i \setminus S_{i+1}\f$ are inserted component by
+component, each located by a walk that starts at the vertex of its neighbour in \f$N(S_i)\f$
+inserted before it.
 
-The nearest-neighbour graphs are computed with a uniform grid of about two points a cell (not
-\cgal's spatial searching: a grid gives the neighbours in expected linear time on points of
-bounded spread, as the paper's Theorem 1 assumes, and its cells also order the insertion for
-locality), in double precision, a search reading at most 512 points: the graph only guides
-the insertion, so an approximate neighbour (points of wildly varying density) costs time, never
-correctness. A walk longer than about \f$\log_2 n + 8\f$ faces starts again from a vertex
-inserted near the point. Expected time \f$O(n)\f$ on points of polynomially bounded spread
-(Theorem 2).
+The paper samples with \f$q = 1/2\f$; the default here is \f$q = 1/8\f$, 10-25% faster on every
+distribution measured (fewer levels, hence fewer graphs and fewer sweeps over the
+triangulation), with walks as short (see the user manual). The paper's proof of Theorem 2
+bounds the chance that a triangle with \f$s\f$ conflicting points appears by the chance that
+none of them is sampled, \f$2^{-s}\f$; with \f$q\f$ it is at most \f$\max(1 - q, 1/2)^s\f$ (a
+matched point is kept with probability 1/2), which keeps the sum over triangles linear for
+any fixed \f$q > 0\f$, with a constant that grows as \f$q\f$ shrinks. That adaptation is ours,
+not the paper's.
+
+The nearest-neighbour graphs are computed with a uniform grid of about two points a cell,
+crowded cells refined by grids of their own (not \cgal's spatial searching: a grid gives the
+neighbours in expected linear time on points of bounded spread, as the paper's Theorem 1
+assumes, and its cells also order the insertion for locality), in double precision, a search
+reading at most 512 points: the graph only guides the insertion, so an approximate neighbour
+(hundreds of equal points) costs time, never correctness. A walk longer than about
+\f$\log_2 n + 8\f$ faces starts again from a vertex inserted near the point. Expected time
+\f$O(n)\f$ on points of polynomially bounded spread (Theorem 2).
 
 The result is exactly the triangulation \cgal's `Delaunay_triangulation_2` builds from the same
 points (co-circular ties broken by \cgal's symbolic perturbation).
@@ -309,13 +385,20 @@ points (co-circular ties broken by \cgal's symbolic perturbation).
     \cgalParamType{`unsigned int`}
     \cgalParamDefault{a fixed seed}
   \cgalParamNEnd
+  \cgalParamNBegin{sample_probability}
+    \cgalParamDescription{the probability \f$q\f$ that a point not matched on its component's cycle is
+                          in the next sample (`Delaunay_from_prediction::parameters::sample_probability()`)}
+    \cgalParamType{`double`, in \f$(0, 1]\f$}
+    \cgalParamDefault{1/8 (the paper's value is 1/2)}
+  \cgalParamNEnd
 \cgalNamedParamsEnd
 
 \returns what the call did: `points_located`, `faces_visited` (divided by `points_located`: the
          mean length of a walk), `walk_fallbacks`, `insertion_rounds` (the number of samples),
          `points_reinserted` (every point), `duplicate_points`.
 \throws Invalid_prediction if a point has a non-finite coordinate, or there are \f$2^{32} - 1\f$
-        points or more. Then `dt` is unchanged.
+        points or more; `std::invalid_argument` if `sample_probability` is not in \f$(0, 1]\f$.
+        Then `dt` is unchanged.
 */
 template <class PointRange, class DT, class NamedParameters = parameters::Default_named_parameters>
 Statistics brio_dc_delaunay(const PointRange& points, DT& dt, const NamedParameters& np = parameters::default_values())
@@ -331,6 +414,13 @@ Statistics brio_dc_delaunay(const PointRange& points, DT& dt, const NamedParamet
   if(n >= std::size_t(internal::no_rank))
     throw Invalid_prediction("Delaunay_from_prediction: 2^32 - 1 points or more are not supported by brio_dc_delaunay");
   const std::uint64_t seed = choose_parameter(get_parameter(np, CGAL::internal_np::random_seed), 0xb410dcu);
+  const double probability = double(choose_parameter(get_parameter(np, internal_np::sample_probability), 0.125));
+  if(!(probability > 0 && probability <= 1)) {
+    std::ostringstream message;
+    message << "Delaunay_from_prediction: brio_dc_delaunay's sample_probability must be in (0, 1]; it is "
+            << probability;
+    throw std::invalid_argument(message.str());
+  }
   Statistics stats;
   dt.clear();
   stats.points_reinserted = n;
@@ -409,8 +499,8 @@ Statistics brio_dc_delaunay(const PointRange& points, DT& dt, const NamedParamet
         }
       }
       for(std::uint32_t k = 0; k < m; ++k) {
-        if(level.in_next[k] == 2)
-          level.in_next[k] = (random() & 1) != 0 ? 1 : 0;
+        if(level.in_next[k] == 2) // (uniform() < 1: probability 1 keeps every point)
+          level.in_next[k] = random.uniform() < probability ? 1 : 0;
         if(level.in_next[k])
           members.push_back(level.members[k]);
       }

@@ -22,6 +22,7 @@ enum strategy_t { strategy };
 enum region_size_t { region_size };
 enum disk_order_t { disk_order };
 enum split_method_t { split_method };
+enum sample_probability_t { sample_probability };
 } // namespace internal_np
 
 /*!
@@ -221,6 +222,26 @@ split_method(const T& v, const CGAL::Named_function_parameters<A, B, C>& np)
 {
   return CGAL::Named_function_parameters<T, internal_np::split_method_t, CGAL::Named_function_parameters<A, B, C>>(
       v, np);
+}
+/// sets the probability with which `brio_dc_delaunay()` puts in the next sample a point that is
+/// not matched on its component's cycle (the paper's value is 1/2; the default 1/8).
+/// \param v a probability in \f$(0, 1]\f$ (a `double`).
+/// \returns the named parameter `sample_probability` with value `v`.
+template <class T>
+CGAL::Named_function_parameters<T, internal_np::sample_probability_t> sample_probability(const T& v)
+{
+  return CGAL::Named_function_parameters<T, internal_np::sample_probability_t>(v);
+}
+/// same, chained in front of other named parameters.
+/// \param v the value of the parameter.
+/// \param np the named parameters to chain after it.
+/// \returns the chain `v`, then `np`.
+template <class T, class A, class B, class C>
+CGAL::Named_function_parameters<T, internal_np::sample_probability_t, CGAL::Named_function_parameters<A, B, C>>
+sample_probability(const T& v, const CGAL::Named_function_parameters<A, B, C>& np)
+{
+  return CGAL::Named_function_parameters<T, internal_np::sample_probability_t,
+                                         CGAL::Named_function_parameters<A, B, C>>(v, np);
 }
 } // namespace parameters
 } // namespace Delaunay_from_prediction
