@@ -601,7 +601,6 @@ Statistics make_delaunay(Triangulation& tr, const NamedParameters& np = paramete
 {
   using parameters::choose_parameter;
   using parameters::get_parameter;
-  using Vertex_handle = typename Triangulation::Vertex_handle;
   using Face_handle = typename Triangulation::Face_handle;
 
   Statistics stats;

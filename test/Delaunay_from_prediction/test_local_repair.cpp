@@ -30,7 +30,7 @@
 // an endless loop is a failure of that group only.
 
 // No budget for Strategy::t_division: reach its repair whatever the damage.
-#define CGAL_DELAUNAY_FROM_PREDICTION_T_DIVISION_BUDGET(n) (std::size_t(-1) / 4)
+#define CGAL_DELAUNAY_FROM_PREDICTION_T_DIVISION_BUDGET(n) ((void)(n), std::size_t(-1) / 4)
 
 #include <CGAL/Delaunay_from_prediction_2.h> // first: the header is self-contained
 

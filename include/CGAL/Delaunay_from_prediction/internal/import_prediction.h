@@ -456,7 +456,7 @@ private:
     // The used points extreme in 8 directions, in counterclockwise order of the directions
     // (+x, +x+y, +y, -x+y, -x, -x-y, -y, +x-y): a convex polygon inside the hull.
     const double dir[8][2] = {{1, 0}, {1, 1}, {0, 1}, {-1, 1}, {-1, 0}, {-1, -1}, {0, -1}, {1, -1}};
-    double best[8], ex[8][2];
+    double best[8] = {}, ex[8][2] = {}; // (set by the first used point: initialized for the compiler)
     bool any = false;
     for(std::size_t v = 0; v < n; ++v) {
       if(!is_used(v))

@@ -54,7 +54,7 @@ using Flip_log = std::vector<std::pair<typename Triangulation::Face_handle, int>
 // slots, so it must find them as they were). No edge lookup: exact even where the faces do
 // not form a triangulation (two edges between the same vertices).
 template <class Tds>
-void undo_flip(Tds& tds, typename Tds::Face_handle f, int i)
+void undo_flip(Tds& /* the faces' data structure, for its types */, typename Tds::Face_handle f, int i)
 {
   // After the flip: f = (a, b, d) in slots (i, ccw(i), cw(i)), g = (d, c, a) in slots
   // (j, ccw(j), cw(j)); before it f = (a, b, c), g = (d, c, b). See flip_edges_while().

@@ -210,7 +210,7 @@ inline std::vector<unsigned char> gradation_rounds(const Preorder_forest& forest
     for(std::uint32_t c = 0; c < forest.degree[r]; ++c)
       u = (std::min)(u, random());
     unsigned char i = 0;
-    while(u >= below[i] && i + 1 < below.size())
+    while(u >= below[i] && std::size_t(i) + 1 < below.size())
       ++i;
     round[r] = i;
   }
