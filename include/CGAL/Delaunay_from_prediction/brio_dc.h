@@ -187,10 +187,10 @@ inline void nearest_neighbour_graph(const double* xy, std::size_t m, std::vector
   std::vector<double> p(2 * m); // coordinates in grid order
   gather_coordinates(xy, order.data(), m, p.data());
   std::vector<double> best(m, std::numeric_limits<double>::infinity());
-  std::vector<unsigned char> refined(cells, 0);
   Nng_cells grid; // this grid's refined cells (the rest is filled in at the end)
   std::vector<std::uint32_t>& sub_of = grid.sub_of;
   std::vector<Nng_cells>& sub = grid.sub;
+  auto refined = [&](std::size_t c) { return !sub_of.empty() && sub_of[c] != no_rank; };
   {
     std::vector<std::uint32_t> sub_order, sub_nn, moved;
     std::vector<double> sub_p;
@@ -198,7 +198,6 @@ inline void nearest_neighbour_graph(const double* xy, std::size_t m, std::vector
       const std::size_t first = start[c], count = start[c + 1] - start[c];
       if(count <= crowded || count == m || depth >= 6)
         continue;
-      refined[c] = 1;
       if(sub_of.empty())
         sub_of.assign(cells, no_rank);
       sub_of[c] = std::uint32_t(sub.size());
@@ -249,7 +248,7 @@ inline void nearest_neighbour_graph(const double* xy, std::size_t m, std::vector
       long r = 1;
       std::size_t read = 0;
       bool searched = false;
-      if(!refined[c]) {
+      if(!refined(c)) {
         // The common case: the cells around are at most three runs of the grid order (rows).
         std::uint32_t run[3][2];
         std::size_t total = 0, runs = 0;
@@ -280,7 +279,7 @@ inline void nearest_neighbour_graph(const double* xy, std::size_t m, std::vector
         }
       }
       if(!searched && r == 1) {
-        if(!refined[c]) { // (a cell is that large only when it holds every point: equal points)
+        if(!refined(c)) { // (a cell is that large only when it holds every point: equal points)
           for(std::uint32_t j = start[c]; j < start[c + 1] && read < budget && b > 0; ++j, ++read)
             consider(j);
           read = 0;
@@ -306,7 +305,7 @@ inline void nearest_neighbour_graph(const double* xy, std::size_t m, std::vector
             if(cell_distance2 > b)
               continue;
             const std::size_t cell = std::size_t(gy) * side_x + std::size_t(gx);
-            if(refined[cell]) {
+            if(refined(cell)) {
               read_grid_near(sub[sub_of[cell]], start[cell], x, y, b, read, budget, consider);
               continue;
             }
