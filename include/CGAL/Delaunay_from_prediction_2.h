@@ -23,6 +23,7 @@
 #include <CGAL/Delaunay_from_prediction/Statistics.h>
 #include <CGAL/Delaunay_from_prediction/parameters.h>
 #include <CGAL/Delaunay_from_prediction/internal/carve_repair.h>
+#include <CGAL/Delaunay_from_prediction/internal/hierarchy.h>
 #include <CGAL/Delaunay_from_prediction/internal/hull_repair.h>
 #include <CGAL/Delaunay_from_prediction/internal/import_prediction.h>
 #include <CGAL/Delaunay_from_prediction/internal/input_check.h>
@@ -355,6 +356,9 @@ template <class PointRange, class FaceRange, class DT,
 Statistics delaunay_from_prediction(const PointRange& points, const FaceRange& faces, DT& dt,
                                     const NamedParameters& np = parameters::default_values())
 {
+  if constexpr(internal::is_triangulation_hierarchy<DT>::value) { // level 0, then the upper levels
+    return internal::with_levels_rebuilt(dt, [&](auto& level0) { return delaunay_from_prediction(points, faces, level0, np); });
+  } else { // the body below, not instantiated for a hierarchy
   using parameters::choose_parameter;
   using parameters::get_parameter;
   using Vertex_handle = typename DT::Vertex_handle;
@@ -554,6 +558,7 @@ Statistics delaunay_from_prediction(const PointRange& points, const FaceRange& f
   }
   dt.swap(result);
   return stats;
+  } // not a hierarchy
 }
 
 /*!
@@ -599,6 +604,9 @@ the same vertex objects (`Statistics::fell_back`).
 template <class Triangulation, class NamedParameters = parameters::Default_named_parameters>
 Statistics make_delaunay(Triangulation& tr, const NamedParameters& np = parameters::default_values())
 {
+  if constexpr(internal::is_triangulation_hierarchy<Triangulation>::value) { // level 0, then the upper levels
+    return internal::with_levels_rebuilt(tr, [&](auto& level0) { return make_delaunay(level0, np); });
+  } else { // the body below, not instantiated for a hierarchy
   using parameters::choose_parameter;
   using parameters::get_parameter;
   using Face_handle = typename Triangulation::Face_handle;
@@ -698,6 +706,7 @@ Statistics make_delaunay(Triangulation& tr, const NamedParameters& np = paramete
     throw;
   }
   return stats;
+  } // not a hierarchy
 }
 
 } // namespace Delaunay_from_prediction

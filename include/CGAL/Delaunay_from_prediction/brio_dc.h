@@ -12,6 +12,7 @@
 
 #include <CGAL/Delaunay_from_prediction/Statistics.h>
 #include <CGAL/Delaunay_from_prediction/parameters.h>
+#include <CGAL/Delaunay_from_prediction/internal/hierarchy.h>
 #include <CGAL/Delaunay_from_prediction/internal/input_check.h>
 #include <CGAL/Delaunay_from_prediction/internal/random.h>
 #include <CGAL/Delaunay_from_prediction/internal/spanning_tree_insertion.h>
@@ -402,6 +403,9 @@ points (co-circular ties broken by \cgal's symbolic perturbation).
 template <class PointRange, class DT, class NamedParameters = parameters::Default_named_parameters>
 Statistics brio_dc_delaunay(const PointRange& points, DT& dt, const NamedParameters& np = parameters::default_values())
 {
+  if constexpr(internal::is_triangulation_hierarchy<DT>::value) { // level 0, then the upper levels
+    return internal::with_levels_rebuilt(dt, [&](auto& level0) { return brio_dc_delaunay(points, level0, np); });
+  } else { // the body below, not instantiated for a hierarchy
   using parameters::choose_parameter;
   using parameters::get_parameter;
   using Point = typename DT::Point;
@@ -572,6 +576,7 @@ Statistics brio_dc_delaunay(const PointRange& points, DT& dt, const NamedParamet
     }
   }
   return stats;
+  } // not a hierarchy
 }
 
 } // namespace Delaunay_from_prediction

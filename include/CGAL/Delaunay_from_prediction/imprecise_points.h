@@ -14,6 +14,7 @@
 
 #include <CGAL/Delaunay_from_prediction/Statistics.h>
 #include <CGAL/Delaunay_from_prediction/parameters.h>
+#include <CGAL/Delaunay_from_prediction/internal/hierarchy.h>
 #include <CGAL/Delaunay_from_prediction/internal/input_check.h>
 #include <CGAL/Delaunay_from_prediction/internal/point_insertion.h>
 #include <CGAL/Delaunay_from_prediction/internal/random.h>
@@ -197,6 +198,9 @@ public:
   Statistics triangulate(const PointRange& instance, DT& dt,
                          const NamedParameters& np = parameters::default_values()) const
   {
+    if constexpr(internal::is_triangulation_hierarchy<DT>::value) { // level 0, then the upper levels
+      return internal::with_levels_rebuilt(dt, [&](auto& level0) { return triangulate(instance, level0, np); });
+    } else { // the body below, not instantiated for a hierarchy
     static_assert(std::is_same<typename DT::Point, Point>::value,
                   "Imprecise_points_2::triangulate: the triangulation's points must be Gt::Point_2");
     (void)np;
@@ -236,6 +240,7 @@ public:
       grid.record(q, v);
     }
     return stats;
+    } // not a hierarchy
   }
 
 private:

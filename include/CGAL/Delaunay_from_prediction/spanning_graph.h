@@ -11,6 +11,7 @@
 
 #include <CGAL/Delaunay_from_prediction/Statistics.h>
 #include <CGAL/Delaunay_from_prediction/parameters.h>
+#include <CGAL/Delaunay_from_prediction/internal/hierarchy.h>
 #include <CGAL/Delaunay_from_prediction/internal/input_check.h>
 #include <CGAL/Delaunay_from_prediction/internal/spanning_tree_insertion.h>
 
@@ -94,6 +95,9 @@ template <class PointRange, class EdgeRange, class DT,
 Statistics delaunay_from_spanning_graph(const PointRange& points, const EdgeRange& edges, DT& dt,
                                         const NamedParameters& np = parameters::default_values())
 {
+  if constexpr(internal::is_triangulation_hierarchy<DT>::value) { // level 0, then the upper levels
+    return internal::with_levels_rebuilt(dt, [&](auto& level0) { return delaunay_from_spanning_graph(points, edges, level0, np); });
+  } else { // the body below, not instantiated for a hierarchy
   (void)np;
   Statistics stats;
   const auto point_at = std::begin(points);
@@ -107,6 +111,7 @@ Statistics delaunay_from_spanning_graph(const PointRange& points, const EdgeRang
   dt.clear();
   internal::build_along_edges(dt, point_at, n, ends, stats);
   return stats;
+  } // not a hierarchy
 }
 
 } // namespace Delaunay_from_prediction

@@ -12,6 +12,7 @@
 
 #include <CGAL/Delaunay_from_prediction/Statistics.h>
 #include <CGAL/Delaunay_from_prediction/parameters.h>
+#include <CGAL/Delaunay_from_prediction/internal/hierarchy.h>
 #include <CGAL/Delaunay_from_prediction/internal/random.h>
 #include <CGAL/Delaunay_from_prediction/internal/rebuild.h>
 #include <CGAL/Delaunay_from_prediction/internal/spanning_tree_insertion.h>
@@ -275,6 +276,14 @@ Statistics split_delaunay(const DT& dt, IsInFirst is_in_first, DT1& dt1, DT2& dt
   static_assert(std::is_same<typename DT::Point, typename DT1::Point>::value &&
                     std::is_same<typename DT::Point, typename DT2::Point>::value,
                 "split_delaunay: the three triangulations must have the same point type");
+  if constexpr(internal::is_triangulation_hierarchy<DT1>::value || internal::is_triangulation_hierarchy<DT2>::value) {
+    bool user_threw = false; // is_in_first runs before anything is modified
+    internal::Noting_throws<IsInFirst> noting{is_in_first, &user_threw};
+    auto untouched = [&] { return user_threw; };
+    return internal::with_levels_rebuilt_if_hierarchy(dt1, [&](auto& t1) {
+      return internal::with_levels_rebuilt_if_hierarchy(dt2, [&](auto& t2) { return split_delaunay(dt, noting, t1, t2, np); }, untouched);
+    }, untouched);
+  } else { // the body below, not instantiated for a hierarchy
   using parameters::choose_parameter;
   using parameters::get_parameter;
   const void* const input = &dt;
@@ -370,6 +379,7 @@ Statistics split_delaunay(const DT& dt, IsInFirst is_in_first, DT1& dt1, DT2& dt
   insert_part(dt1, first);
   insert_part(dt2, second);
   return stats;
+  } // not a hierarchy
 }
 
 } // namespace Delaunay_from_prediction
