@@ -16,6 +16,7 @@
 
 #include <CGAL/Delaunay_from_predicted_edges_2.h>
 #include <CGAL/Delaunay_from_prediction/brio_dc.h>
+#include <CGAL/Delaunay_from_prediction/internal/hierarchy.h>
 #include <CGAL/Delaunay_from_prediction/imprecise_points.h>
 #include <CGAL/Delaunay_from_prediction/spanning_graph.h>
 #include <CGAL/Delaunay_from_prediction/split.h>
@@ -38,6 +39,7 @@ using Hierarchy_plain = Hierarchy_of<K, CGAL::Triangulation_vertex_base_2<K>>;
 template <class K>
 struct Derived_hierarchy : Hierarchy_plain<K>
 {
+  using Hierarchy_plain<K>::Hierarchy_plain;
   int tag = 7;
 };
 // A hierarchy over a plain Triangulation_2 (make_delaunay's input may be one).
