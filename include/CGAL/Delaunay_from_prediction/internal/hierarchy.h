@@ -36,6 +36,13 @@ typename Hierarchy::Tr_Base& level_zero(Hierarchy& h)
   return static_cast<typename Hierarchy::Tr_Base&>(h);
 }
 
+// CGAL's hierarchy class of `h` (its clear() and insert(), whatever a derived class declares).
+template <class Hierarchy>
+CGAL::Triangulation_hierarchy_2<typename Hierarchy::Tr_Base>& cgal_hierarchy(Hierarchy& h)
+{
+  return static_cast<CGAL::Triangulation_hierarchy_2<typename Hierarchy::Tr_Base>&>(h);
+}
+
 // Empties the upper levels of `h`, leaving level 0 (its vertex and face objects) as it is.
 // With `unlink`, no vertex of level 0 has an up() copy afterwards; otherwise the caller resets
 // them (they refer to destroyed copies).
@@ -48,7 +55,7 @@ void clear_upper_levels(Hierarchy& h, bool unlink = true)
   // cleared, level 0 swapped back.
   Tr_Base level0(h.geom_traits());
   level0.swap(level_zero(h));
-  h.clear();
+  cgal_hierarchy(h).clear();
   level_zero(h).swap(level0);
   h.Tr_Base::infinite_vertex()->set_up(Vertex_handle());
   if(unlink)
@@ -81,10 +88,11 @@ void rebuild_upper_levels(Hierarchy& h)
     level_zero(h).tds().set_dimension(0);
   // Container order: level 0 read in memory order; the points of the upper levels are
   // located from the top of the hierarchy, whatever the order.
-  for(auto v = h.Tr_Base::finite_vertices_begin(); v != h.Tr_Base::finite_vertices_end(); ++v) {
+  const auto end = h.Tr_Base::finite_vertices_end();
+  for(auto v = h.Tr_Base::finite_vertices_begin(); v != end; ++v) {
     v->set_up(Vertex_handle());
     const auto f = v->face();
-    h.insert(v->point(), Tr_Base::VERTEX, f, f->index(v));
+    cgal_hierarchy(h).insert(v->point(), Tr_Base::VERTEX, f, f->index(v));
   }
 }
 
