@@ -55,9 +55,10 @@ enum class Strategy {
   /// `delaunay_from_prediction()` only (`make_delaunay()` treats it as `rebuild`): no
   /// certification or repair; the triangulation is built from scratch along a spanning tree
   /// of the faces' edges, as `delaunay_from_spanning_graph()` does (Corollaries 3.4 and 3.5
-  /// of the paper: the faces need not be planar; time \f$O((n + D \log n) \log^* n)\f$ in the
-  /// paper's model). Reported as a fallback, as `rebuild` is. Slower than the default on
-  /// every prediction measured (see the user manual): selectable for comparison.
+  /// of the paper: the faces need not be planar; the paper's \f$O((n + D \log n) \log^* n)\f$
+  /// bound is not proven for this insertion, which has no conflict lists, see
+  /// `delaunay_from_spanning_graph()`). Reported as a fallback, as `rebuild` is. Slower than
+  /// the default on every prediction measured (see the user manual): selectable for comparison.
   spanning_tree
 };
 
@@ -71,7 +72,8 @@ enum class Disk_order {
   /// each sorted along a grid), the order of the paper's fastest experiment, where
   /// consecutive insertions are near each other in memory.
   spatial,
-  /// a uniformly random order: the order of the paper's analysis (Theorem 1).
+  /// a uniformly random order: the order of the paper's analysis (Theorem 1); slower, its
+  /// accesses being cache misses.
   random
 };
 

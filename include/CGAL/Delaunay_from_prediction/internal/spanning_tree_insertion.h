@@ -25,6 +25,9 @@
 //   near each other in the plane and in memory.
 // - The gradation has ratio 8 (see gradation_rounds()), and a graph whose edges are far too
 //   long to help is told before any of this (edges_look_random()).
+// So the paper's O((n + D_T log n) log* n) expected bound (Theorem 3.3) is not proven for this
+// engine, and no other bound is: each walk from the tree is capped at about log2 n + 8 faces,
+// but the grid restart after the cap and the insertions themselves are not bounded by a proof.
 
 #ifndef CGAL_DELAUNAY_FROM_PREDICTION_INTERNAL_SPANNING_TREE_INSERTION_H
 #define CGAL_DELAUNAY_FROM_PREDICTION_INTERNAL_SPANNING_TREE_INSERTION_H
