@@ -348,8 +348,8 @@ component), and every other point of \f$S_i\f$ with probability \f$q\f$ (named p
 component, each located by a walk that starts at the vertex of its neighbour in \f$N(S_i)\f$
 inserted before it.
 
-The paper samples with \f$q = 1/2\f$; the default here is \f$q = 1/8\f$, 10-25% faster on every
-distribution measured (fewer levels, hence fewer graphs and fewer sweeps over the
+The paper samples with \f$q = 1/2\f$; the default here is \f$q = 1/8\f$, 15-24% less time on
+every distribution measured (fewer levels, hence fewer graphs and fewer sweeps over the
 triangulation), with walks as short (see the user manual). The paper's proof of Theorem 2
 bounds the chance that a triangle with \f$s\f$ conflicting points appears by the chance that
 none of them is sampled, \f$2^{-s}\f$; with \f$q\f$ it is at most \f$\max(1 - q, 1/2)^s\f$ (a

@@ -47,8 +47,8 @@ enum class Strategy {
   /// of it; replace the others by its faces and reinsert their inner vertices; then Lawson
   /// flips. A prediction with holes or overlaps first gets them filled as by `carve`. When
   /// the damage would spoil most regions, or the division cannot be planned, the repair is
-  /// left to `carve` (the flips, after a fill). Slower than `carve` on every input measured
-  /// (see the user manual): selectable for comparison.
+  /// left to `carve` (the flips, after a fill). Never faster than `carve` beyond run-to-run
+  /// noise, much slower where it divides (see the user manual): selectable for comparison.
   t_division,
   /// ignore the prediction and rebuild (for comparisons).
   rebuild,
