@@ -35,7 +35,7 @@ enum class Strategy {
   /// the default: currently the same as `carve`.
   automatic,
   /// certify, then Lawson flips; a prediction that is not a triangulation of its points is
-  /// rebuilt from scratch at once (the behaviour before local repair existed).
+  /// rebuilt from scratch at once (for comparison).
   flips,
   /// certify; carve out inverted, flat, repeated and overlapping faces with the stars of
   /// their vertices; retriangulate the holes and reinsert the carved vertices; then Lawson
