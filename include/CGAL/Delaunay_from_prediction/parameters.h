@@ -94,8 +94,9 @@ enum class Split_method {
   /// the better of two random points (the one whose nearest neighbour in its own part a search
   /// by growing circles over the current triangulation finds first), then reinsert the points
   /// in reverse order into the triangulation of their part, each located by a walk from that
-  /// nearest neighbour. Expected \f$O(n)\f$ time, but the removals (\cgal's) cost more than the
-  /// insertions they spare: selectable for comparison.
+  /// nearest neighbour. The paper proves expected \f$O(n)\f$ time with a removal linear in the
+  /// degree; with \cgal's removal and visibility walks the bound is not proven here, and the
+  /// removals cost more than the insertions they spare: selectable for comparison.
   randomized
 };
 
