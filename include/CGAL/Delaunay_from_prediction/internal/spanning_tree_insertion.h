@@ -18,8 +18,8 @@
 //   every round; the walk from an ancestor is the same walk with the intermediate points
 //   skipped).
 // - The fallback point location is a jump to the last vertex inserted in the point's cell of
-//   a uniform grid (two resolutions), then an uncapped walk: expected O(1) steps on
-//   well-spread points, instead of the O(log n) point location structure of the proof.
+//   a uniform grid (two resolutions), then an uncapped walk: short on well-spread points
+//   (measured, not proven), instead of the O(log n) point location structure of the proof.
 // - The tree is the breadth-first tree of the given graph (the graph itself when it is a
 //   tree); points are scanned in its depth-first preorder, so that consecutive insertions are
 //   near each other in the plane and in memory.
