@@ -97,7 +97,7 @@ unset logscale xy
 set xrange [0:*]
 set yrange [0:*]
 plot B using 'D_over_n':(column('cgal_min_s')*1e3) with linespoints ls 1 title 'CGAL from scratch', \
-     B using 'D_over_n':(column('default_min_s')*1e3) with linespoints ls 3 title 'delaunay\_from\_prediction(), default (flip budget n/2 + 64)', \
+     B using 'D_over_n':(column('default_min_s')*1e3) with linespoints ls 3 title 'delaunay\_from\_prediction(), default (flip budget 3n/4 + 64)', \
      B using 'D_over_n':(column('default_fell_back') > 0 ? column('default_min_s')*1e3 : NaN) with points ls 9 title '   ... fell back to a rebuild (Lawson flips > budget)', \
      B using 'D_over_n':(column('unlimited_min_s')*1e3) with linespoints ls 4 title 'no flip budget, no screen (pure Lawson)'
 

@@ -103,7 +103,9 @@ leaves out triangles that overlap others (a separating triangle around a vertex 
 three), and corrects whatever else the graph got wrong (crossing edges). The result is exactly
 CGAL's Delaunay triangulation of the points. The graph costs \f$O(m \log m + m d)\f$ for
 \f$m\f$ edges and maximum degree \f$d\f$ (a sort of the edges, then a merge of two neighbour
-lists per edge), and uses no geometry.
+lists per edge), and uses no geometry. The paper's \f$O(n + D \log n)\f$ bound of Corollary 4.2
+is not met: ear clipping is quadratic in the size of a hole, and Lawson's flips have no bound in
+\f$D\f$ (a call whose damage exceeds the budgets rebuilds from scratch instead).
 
 \tparam PointRange a random-access range of `DT::Point`.
 \tparam EdgeRange a range whose elements `e` give two integer indices into `points`, as

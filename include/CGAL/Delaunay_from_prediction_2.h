@@ -14,8 +14,9 @@
 //           internal/ear_clipping.h       the hole filler
 //           internal/region_repair.h      the t-division repair (Theorem 2.1)
 //   repair  internal/lawson_flip.h        Lawson flips seeded with the failing edges
-//           internal/rebuild.h            CGAL insertion for points no face uses, from-scratch
-//                                         fallbacks, in-place rebuilds keeping vertices
+//           internal/rebuild.h            the package's insertion (point_insertion.h) for points
+//                                         no face uses, from-scratch fallbacks, in-place
+//                                         rebuilds keeping vertices
 
 #ifndef CGAL_DELAUNAY_FROM_PREDICTION_2_H
 #define CGAL_DELAUNAY_FROM_PREDICTION_2_H

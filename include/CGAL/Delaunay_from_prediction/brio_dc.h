@@ -349,8 +349,8 @@ component), and every other point of \f$S_i\f$ with probability \f$q\f$ (named p
 component, each located by a walk that starts at the vertex of its neighbour in \f$N(S_i)\f$
 inserted before it.
 
-The paper samples with \f$q = 1/2\f$; the default here is \f$q = 1/8\f$, 10-25% faster on every
-distribution measured (fewer levels, hence fewer graphs and fewer sweeps over the
+The paper samples with \f$q = 1/2\f$; the default here is \f$q = 1/8\f$, 10-24% less time on
+every distribution measured (fewer levels, hence fewer graphs and fewer sweeps over the
 triangulation), with walks as short (see the user manual). The paper's proof of Theorem 2
 bounds the chance that a triangle with \f$s\f$ conflicting points appears by the chance that
 none of them is sampled, \f$2^{-s}\f$; with \f$q\f$ it is at most \f$\max(1 - q, 1/2)^s\f$ (a
@@ -359,13 +359,21 @@ any fixed \f$q > 0\f$, with a constant that grows as \f$q\f$ shrinks. That adapt
 not the paper's.
 
 The nearest-neighbour graphs are computed with a uniform grid of about two points a cell,
-crowded cells refined by grids of their own (not \cgal's spatial searching: a grid gives the
-neighbours in expected linear time on points of bounded spread, as the paper's Theorem 1
-assumes, and its cells also order the insertion for locality), in double precision, a search
-reading at most 512 points: the graph only guides the insertion, so an approximate neighbour
-(hundreds of equal points) costs time, never correctness. A walk longer than about
-\f$\log_2 n + 8\f$ faces starts again from a vertex inserted near the point. Expected time
-\f$O(n)\f$ on points of polynomially bounded spread (Theorem 2).
+crowded cells refined by grids of their own down to 6 levels (not \cgal's spatial searching,
+and not the linear-time algorithm of Chan that the paper's Theorem 1 cites; the grid's cells
+also order the insertion for locality), with distances in double precision and a search
+reading at most 512 points. The graph is exact (compared with a brute-force search in the
+tests, on uniform, clustered, graded, grid, collinear and duplicate points) unless a search
+runs out of its 512 points (hundreds of points at equal or nearly equal positions): then the
+neighbour is approximate, which costs time, never correctness. Each point is located by a
+visibility walk from its neighbour's vertex; a walk longer than about \f$\log_2 n + 8\f$ faces
+starts again, uncapped, from a vertex inserted near the point.
+
+Complexity: the paper's Theorem 2 gives expected \f$O(n + f(n))\f$ time, \f$f(n)\f$ the time of
+a nearest-neighbour graph, for its sampling probability 1/2 and straight walks along the graph's
+edges. This function departs from that setting (grid graph, capped visibility walks with a grid
+restart, \f$q = 1/8\f$ by default): no bound is proven for it. Its walks were measured at
+1.75-2.24 faces per point at \f$10^5\f$ and \f$10^6\f$ points (see the user manual).
 
 The result is exactly the triangulation \cgal's `Delaunay_triangulation_2` builds from the same
 points (co-circular ties broken by \cgal's symbolic perturbation).
@@ -480,7 +488,7 @@ Statistics brio_dc_delaunay(const PointRange& points, DT& dt, const NamedParamet
       // A matching of two points on the cycle of each component of the graph (a functional
       // graph: each component is a tree hanging from one cycle, two mutual neighbours unless
       // neighbours were approximate); one point of each pair goes to the sample, every other
-      // point with probability 1/2.
+      // point with the sampling probability (1/8 by default).
       level.in_next.assign(m, 2); // 2: not decided
       std::vector<std::uint32_t> state(m, 0);
       for(std::uint32_t s = 0; s < m; ++s) {

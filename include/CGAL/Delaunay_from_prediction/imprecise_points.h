@@ -52,11 +52,13 @@ struct is_range<T, std::void_t<decltype(std::begin(std::declval<const T&>()))>> 
 /*!
 \ingroup PkgDelaunayFromPredictionRef
 A set of imprecise points: n disks, each the region where one point of a future point set
-(an instance) will lie. Built once, it computes the Delaunay triangulation of any instance in
-expected linear time, where a build from scratch pays \f$O(n \log n)\f$ (O. Devillers,
-"Delaunay triangulation of imprecise points, a really fast algorithm", Theorem 1).
+(an instance) will lie. Built once, it computes the Delaunay triangulation of any instance by
+walks from nearest-neighbour hints (O. Devillers, "Delaunay triangulation of imprecise points,
+a really fast algorithm"; see below for what of its Theorem 1 applies).
 
-<b>Preprocessing</b> (the constructor, \f$O(n \log n)\f$ expected): the disks are put in an
+<b>Preprocessing</b> (the constructor; the paper's is \f$O(n \log n)\f$ expected with a
+randomized incremental construction, the package locates each centre by a walk instead, with
+no bound proven): the disks are put in an
 order (`Disk_order`); the Delaunay triangulation of their centres is built incrementally in
 that order, and after the insertion of the k-th centre its nearest neighbour among the
 centres inserted before it is recorded (one of its Delaunay neighbours): the hint of the k-th
@@ -64,12 +66,15 @@ disk. The triangulation of the centres is then discarded; the object keeps the o
 hints, the centres and the radii.
 
 <b>An instance</b> (`triangulate()`): its points are inserted in the same order, each located
-by a walk in the current triangulation that starts at the vertex of its hint's point. For
-disjoint unit disks (or unit disks that overlap at most a constant number of times) the walks
-cross a constant number of edges in expectation and the build takes expected linear time. The
-disks are not used by the computation itself: a point outside its disk, or disks of very
-different radii, only make the walks longer (a walk longer than about \f$\log_2 n + 8\f$ faces
-starts again from a vertex inserted near the point); the result is exact in every case.
+by a visibility walk in the current triangulation that starts at the vertex of its hint's
+point. The paper's Theorem 1 (expected linear time) assumes disjoint disks of one radius (or
+of one radius overlapping at most a constant number of times, its Section 6.1), a random
+insertion order (`Disk_order::random`) and straight walks; for the default spatial order, for
+disks of different radii (the paper's Section 6.2 shows a quadratic example) and for points
+outside their disks no bound is proven. The walks here are visibility walks; one longer than
+about \f$\log_2 n + 8\f$ faces starts again, uncapped, from a vertex inserted near the point.
+The disks are not used by the computation itself: a point outside its disk only makes the walks
+longer; the result is exact in every case.
 
 The result is exactly the triangulation CGAL's `Delaunay_triangulation_2` builds from the
 instance points (co-circular ties broken by CGAL's symbolic perturbation).

@@ -35,7 +35,7 @@ enum class Strategy {
   /// the default: currently the same as `carve`.
   automatic,
   /// certify, then Lawson flips; a prediction that is not a triangulation of its points is
-  /// rebuilt from scratch at once (the behaviour before local repair existed).
+  /// rebuilt from scratch at once (for comparison).
   flips,
   /// certify; carve out inverted, flat, repeated and overlapping faces with the stars of
   /// their vertices; retriangulate the holes and reinsert the carved vertices; then Lawson
@@ -47,17 +47,18 @@ enum class Strategy {
   /// of it; replace the others by its faces and reinsert their inner vertices; then Lawson
   /// flips. A prediction with holes or overlaps first gets them filled as by `carve`. When
   /// the damage would spoil most regions, or the division cannot be planned, the repair is
-  /// left to `carve` (the flips, after a fill). Slower than `carve` on every input measured
-  /// (see the user manual): selectable for comparison.
+  /// left to `carve` (the flips, after a fill). Never faster than `carve` beyond run-to-run
+  /// noise, much slower where it divides (see the user manual): selectable for comparison.
   t_division,
   /// ignore the prediction and rebuild (for comparisons).
   rebuild,
   /// `delaunay_from_prediction()` only (`make_delaunay()` treats it as `rebuild`): no
   /// certification or repair; the triangulation is built from scratch along a spanning tree
   /// of the faces' edges, as `delaunay_from_spanning_graph()` does (Corollaries 3.4 and 3.5
-  /// of the paper: the faces need not be planar; time \f$O((n + D \log n) \log^* n)\f$ in the
-  /// paper's model). Reported as a fallback, as `rebuild` is. Slower than the default on
-  /// every prediction measured (see the user manual): selectable for comparison.
+  /// of the paper: the faces need not be planar; the paper's \f$O((n + D \log n) \log^* n)\f$
+  /// bound is not proven for this insertion, which has no conflict lists, see
+  /// `delaunay_from_spanning_graph()`). Reported as a fallback, as `rebuild` is. Slower than
+  /// the default on every prediction measured (see the user manual): selectable for comparison.
   spanning_tree
 };
 
@@ -71,7 +72,8 @@ enum class Disk_order {
   /// each sorted along a grid), the order of the paper's fastest experiment, where
   /// consecutive insertions are near each other in memory.
   spatial,
-  /// a uniformly random order: the order of the paper's analysis (Theorem 1).
+  /// a uniformly random order: the order of the paper's analysis (Theorem 1); slower, its
+  /// accesses being cache misses.
   random
 };
 
@@ -92,8 +94,9 @@ enum class Split_method {
   /// the better of two random points (the one whose nearest neighbour in its own part a search
   /// by growing circles over the current triangulation finds first), then reinsert the points
   /// in reverse order into the triangulation of their part, each located by a walk from that
-  /// nearest neighbour. Expected \f$O(n)\f$ time, but the removals (\cgal's) cost more than the
-  /// insertions they spare: selectable for comparison.
+  /// nearest neighbour. The paper proves expected \f$O(n)\f$ time with a removal linear in the
+  /// degree; with \cgal's removal and visibility walks the bound is not proven here, and the
+  /// removals cost more than the insertions they spare: selectable for comparison.
   randomized
 };
 

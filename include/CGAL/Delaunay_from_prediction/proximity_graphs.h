@@ -146,9 +146,10 @@ OutputIterator write_sorted(std::vector<std::pair<std::size_t, std::size_t>>& ed
 \ingroup PkgDelaunayFromPredictionRef
 Computes the Euclidean minimum spanning tree of `points` from a predicted spanning tree (or
 any graph) on them: Corollary 3.6 of the paper. The Delaunay triangulation is built by
-`delaunay_from_spanning_graph()` (expected \f$O((n + D \log n) \log^* n)\f$ time, \f$D\f$ the
-number of predicted edges that are not Delaunay edges; an exact EMST is a subgraph of the
-Delaunay triangulation, so \f$D = 0\f$ for it), then Kruskal's algorithm runs on its edges.
+`delaunay_from_spanning_graph()` (the insertion order and walks of the paper's Theorem 3.3,
+without its conflict lists: the paper's \f$O((n + D \log n) \log^* n)\f$ bound is not proven
+for it; an exact EMST is a subgraph of the Delaunay triangulation, so every walk starts next
+to its point), then Kruskal's algorithm runs on its edges.
 
 Tie rule: edges are ordered by exact length, then by their pair of indices (smaller index
 first, then larger); the tree returned is the unique minimum spanning tree for that order.

@@ -55,13 +55,16 @@ not be Delaunay edges: a wrong edge only costs time.
 
 A spanning tree of the graph is taken (breadth-first), the points are dealt into the rounds
 of a gradation of random samples weighted by their degree in the tree, and each point is
-inserted by CGAL's incremental Delaunay insertion after a walk in the current triangulation
-from the vertex of its nearest tree ancestor already inserted (Theorem 3.3 of the paper, with
-Lemma 3.2's location by walks along tree edges). A walk longer than about
-\f$\log_2 n + 8\f$ faces starts again from a vertex inserted near the point. Expected time
-\f$O((n + D_T \log n) \log^* n)\f$ in the model of the paper, where \f$D_T\f$ is the number of
-tree edges that are not Delaunay edges; with a tree of Delaunay edges the build needs no
-spatial sort. A graph whose edges are much longer than the spacing of the points (the
+located by a walk in the current triangulation from the vertex of its nearest tree ancestor
+already inserted, then inserted by the package's insertion (a split and flips for a point
+strictly inside a face, \cgal's insertion otherwise). This is the insertion order and the
+walks along tree edges of the paper's Theorem 3.3 and Lemma 3.2, with a gradation of ratio 8
+instead of the paper's \f$\log^*\f$ sequence and without the paper's conflict lists: points
+are inserted one by one. The paper's \f$O((n + D_T \log n) \log^* n)\f$ expected bound
+(\f$D_T\f$ the number of tree edges that are not Delaunay edges) is therefore not proven for
+this function, and no other bound is: a walk from the tree crosses at most about
+\f$\log_2 n + 8\f$ faces, then starts again, uncapped, from a vertex inserted in the point's
+cell of a grid. With a tree of Delaunay edges the build needs no spatial sort. A graph whose edges are much longer than the spacing of the points (the
 median of 255 sampled edges over 32 times the side of the area per point: a random tree) or
 that has more than \f$n/64\f$ connected components is not used at all, and when the walks keep
 missing in a round (more than half of them past their cap), the remaining points are

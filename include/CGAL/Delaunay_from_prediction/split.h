@@ -231,10 +231,11 @@ V. Sacristan, M. Teillaud, "Splitting a Delaunay triangulation in linear time").
 
 By default (`Split_method::ordered`) each part is inserted in the order of `dt`'s vertices when
 that order is spatially coherent, as it is after \cgal's range insertion (so no sort is
-needed), and in the package's grid order otherwise; `Split_method::randomized` runs the paper's
-expected-linear-time algorithm (removal of the better of two random points, nearest neighbours
-by growing circles, reinsertion by walks from them), which measured slower (see the user
-manual). Either way the results are exactly \cgal's triangulations of the two parts.
+needed), and in the package's grid order otherwise (no bound is proven for either);
+`Split_method::randomized` runs the paper's algorithm, expected linear time in the paper
+(removal of the better of two random points, nearest neighbours by growing circles,
+reinsertion by walks from them; here with \cgal's vertex removal and visibility walks, so
+the paper's bound is not proven for it), which measured slower (see the user manual). Either way the results are exactly \cgal's triangulations of the two parts.
 
 \tparam DT a `CGAL::Delaunay_triangulation_2<Gt, Tds>`.
 \tparam IsInFirst a function object taking a `DT::Vertex_handle` and returning a `bool`.

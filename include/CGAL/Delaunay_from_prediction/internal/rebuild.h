@@ -97,8 +97,8 @@ void build_from_scratch(DT& dt, PointIterator points, std::size_t n, Statistics&
 }
 
 // Replaces the faces of `tr` by those of DT(its vertices), keeping every vertex object (so
-// vertex handles and info() survive). The new triangulation is built aside with CGAL's
-// insertion, then transplanted face by face, any dimension included. If two vertices are at
+// vertex handles and info() survive). The new triangulation is built aside by the package's
+// insertion (insert_by_index()), then transplanted face by face, any dimension included. If two vertices are at
 // the same point, throws Invalid_prediction naming both, before `tr` is modified.
 template <class Triangulation>
 void rebuild_keeping_vertices(Triangulation& tr, Statistics& stats)

@@ -18,13 +18,16 @@
 //   every round; the walk from an ancestor is the same walk with the intermediate points
 //   skipped).
 // - The fallback point location is a jump to the last vertex inserted in the point's cell of
-//   a uniform grid (two resolutions), then an uncapped walk: expected O(1) steps on
-//   well-spread points, instead of the O(log n) point location structure of the proof.
+//   a uniform grid (two resolutions), then an uncapped walk: short on well-spread points
+//   (measured, not proven), instead of the O(log n) point location structure of the proof.
 // - The tree is the breadth-first tree of the given graph (the graph itself when it is a
 //   tree); points are scanned in its depth-first preorder, so that consecutive insertions are
 //   near each other in the plane and in memory.
 // - The gradation has ratio 8 (see gradation_rounds()), and a graph whose edges are far too
 //   long to help is told before any of this (edges_look_random()).
+// So the paper's O((n + D_T log n) log* n) expected bound (Theorem 3.3) is not proven for this
+// engine, and no other bound is: each walk from the tree is capped at about log2 n + 8 faces,
+// but the grid restart after the cap and the insertions themselves are not bounded by a proof.
 
 #ifndef CGAL_DELAUNAY_FROM_PREDICTION_INTERNAL_SPANNING_TREE_INSERTION_H
 #define CGAL_DELAUNAY_FROM_PREDICTION_INTERNAL_SPANNING_TREE_INSERTION_H
