@@ -298,10 +298,13 @@ private:
       if(!(max_radius < std::numeric_limits<double>::infinity())) // a radius too large for double
         max_radius = 0;
       const internal::Box box = internal::bounding_box(n, [&](std::size_t i) -> const Point& { return centre_[i]; });
-      xmin_ = box.xmin - max_radius;
-      xmax_ = box.xmax + max_radius;
-      ymin_ = box.ymin - max_radius;
-      ymax_ = box.ymax + max_radius;
+      // Widened by the radius, but finite: a box to infinity would give the grid no cells.
+      const double huge = (std::numeric_limits<double>::max)();
+      xmin_ = (std::max)(box.xmin - max_radius, -huge);
+      xmax_ = (std::min)(box.xmax + max_radius, huge);
+      ymin_ = (std::max)(box.ymin - max_radius, -huge);
+      ymax_ = (std::min)(box.ymax + max_radius, huge);
+      scale_ = internal::unit_scale(box);
     }
     compute_hints();
   }
@@ -311,7 +314,8 @@ private:
   // fan of its new vertex (the nearest neighbour of a point is a Delaunay neighbour). Each
   // centre is located from the previous one (spatial order) or from the last centre inserted
   // in its grid cell (random order, where the previous centre is anywhere). The distances are
-  // compared in double: a hint only chooses where a walk starts.
+  // compared in double, on coordinates scaled to the box (squared_distance_in_double()): a
+  // hint only chooses where a walk starts.
   void compute_hints()
   {
     using Vb = Triangulation_vertex_base_with_info_2<std::uint32_t, Gt>;
@@ -329,8 +333,8 @@ private:
       const Point& c = centre_[order_[r]];
       Vertex_handle start = grid.near(c);
       if(start == Vertex_handle() ||
-         (previous != Vertex_handle() && internal::squared_distance_in_double(previous->point(), c) <
-                                             internal::squared_distance_in_double(start->point(), c)))
+         (previous != Vertex_handle() && internal::squared_distance_in_double(previous->point(), c, scale_) <
+                                             internal::squared_distance_in_double(start->point(), c, scale_)))
         start = previous;
       const std::size_t count = dt.number_of_vertices();
       const Vertex_handle v =
@@ -350,7 +354,7 @@ private:
           do {
             if(dt.is_infinite(w))
               continue;
-            const double d = internal::squared_distance_in_double(w->point(), c);
+            const double d = internal::squared_distance_in_double(w->point(), c, scale_);
             if(d < best_distance) {
               best_distance = d;
               best = w->info();
@@ -372,6 +376,7 @@ private:
   std::vector<std::uint32_t> hint_rank_; // hint_rank_[r]: the rank of the hint of the disk of rank r (r > 0)
   std::vector<std::uint32_t> rank_;      // rank_[i]: the rank of disk i (inverse of order_)
   double xmin_ = 0, xmax_ = 0, ymin_ = 0, ymax_ = 0;
+  double scale_ = 1; // unit_scale() of the centres' box, for the distances of compute_hints()
 };
 
 } // namespace Delaunay_from_prediction
