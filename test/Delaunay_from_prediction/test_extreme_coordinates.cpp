@@ -112,6 +112,8 @@ void nearest_neighbours(const Points& points, bool exact)
   for(std::size_t k = 0; k < sorted.size(); ++k)
     permutation = permutation && sorted[k] == k;
   DFP_CHECK(permutation);
+  if(m == 1)
+    DFP_CHECK(nn[0] == DFP::internal::no_rank);
   if(!permutation || m < 2)
     return;
   auto compare_distance = K().compare_distance_2_object();
@@ -152,6 +154,22 @@ void imprecise(const Points& points, double radius)
       check_is_cgal_delaunay(dt, instance);
       DFP_CHECK(st.duplicate_points == instance.size() - dt.number_of_vertices());
     }
+  }
+}
+
+// Imprecise_points_2::contains() where squares of distances overflow or underflow in double.
+void disk_containment()
+{
+  for(const double unit : {1e200, 1e-200, std::ldexp(1.0, -1070), 1e307}) {
+    Scope s("contains() at ", unit);
+    const Points centres = {Point(0, 0), Point(4 * unit, 0)};
+    const DFP::Imprecise_points_2<K> disks(centres, K::FT(unit));
+    DFP_CHECK(disks.contains(0, Point(unit, 0)));      // on the circle
+    DFP_CHECK(disks.contains(0, Point(0, -unit)));     // on the circle
+    DFP_CHECK(!disks.contains(0, Point(2 * unit, 0))); // outside
+    DFP_CHECK(!disks.contains(0, Point(unit, unit)));  // outside
+    DFP_CHECK(disks.contains(1, Point(4 * unit, unit / 2)));
+    DFP_CHECK(!disks.contains(1, Point(-4 * unit, 0)));
   }
 }
 
@@ -475,6 +493,7 @@ int main(int argc, char** argv)
   DFP_RUN(overflowing_distances());
   DFP_RUN(underflowing_distances());
   DFP_RUN(mixed_magnitudes());
+  DFP_RUN(disk_containment());
   DFP_RUN(scales());
   return finish("test_extreme_coordinates");
 }

@@ -148,8 +148,8 @@ inline void nearest_neighbour_graph_in_frame(const double* xy, std::size_t m, st
     ymin = (std::min)(ymin, xy[2 * k + 1]);
     ymax = (std::max)(ymax, xy[2 * k + 1]);
   }
-  // In the caller's frame the box's larger side is at least 2^-74 (and at most 2^64). A side
-  // below 2^-960 (a refined cell of points a few subnormals apart near the origin) counts as
+  // In the frame nearest_neighbour_graph() gives, the box's larger side is 0 or between 2^-74
+  // and 2^65; refined cells are smaller. A side below 2^-960 (a refined cell of points a few subnormals apart near the origin) counts as
   // 0: cells per unit would overflow, and the squares of such differences underflow anyway.
   const double width = xmax - xmin > 0x1p-960 ? xmax - xmin : 0, height = ymax - ymin > 0x1p-960 ? ymax - ymin : 0;
   // Square cells of area 2 / density, sqrt(target * width / height) of them across (the
@@ -326,7 +326,7 @@ inline void nearest_neighbour_graph_in_frame(const double* xy, std::size_t m, st
         const double reach = double(r) * shorter + margin;
         searched = !any_cell || b <= reach * reach || read >= budget || b == 0;
       }
-      if(bk == no_rank) { // no other point read (not with finite coordinates): any will do
+      if(bk == no_rank && m > 1) { // no other point read (not with finite coordinates): any will do
         bk = k == 0 ? 1 : k - 1;
         b = std::numeric_limits<double>::infinity();
       }
@@ -405,9 +405,11 @@ not the paper's.
 The nearest-neighbour graphs are computed with a uniform grid of about two points a cell,
 crowded cells refined by grids of their own (not \cgal's spatial searching: a grid gives the
 neighbours in expected linear time on points of bounded spread, as the paper's Theorem 1
-assumes, and its cells also order the insertion for locality), in double precision, a search
-reading at most 512 points: the graph only guides the insertion, so an approximate neighbour
-(hundreds of equal points) costs time, never correctness. A walk longer than about
+assumes, and its cells also order the insertion for locality), in double precision (on
+coordinates scaled by a power of two to their bounding box where squared distances would
+overflow or underflow), a search reading at most 512 points: the graph only guides the
+insertion, so an approximate neighbour (hundreds of equal points, points closer than
+\f$2^{-511}\f$ of the bounding box) costs time, never correctness: every point is inserted. A walk longer than about
 \f$\log_2 n + 8\f$ faces starts again from a vertex inserted near the point. Expected time
 \f$O(n)\f$ on points of polynomially bounded spread (Theorem 2).
 

@@ -22,6 +22,7 @@
 #include <CGAL/Delaunay_from_prediction/internal/vertex_info.h>
 
 #include <CGAL/Delaunay_triangulation_2.h>
+#include <CGAL/Exact_rational.h>
 #include <CGAL/Triangulation_data_structure_2.h>
 #include <CGAL/Triangulation_vertex_base_with_info_2.h>
 #include <CGAL/number_utils.h>
@@ -153,15 +154,23 @@ public:
   /// \returns the radius of disk `i`.
   /// \param i a disk index, below `size()`.
   const FT& radius(std::size_t i) const { return radius_[i]; }
-  /// tests a point against a disk (exactly with a kernel whose constructions are exact; with
-  /// `Epick` the squared distance is rounded).
+  /// tests a point against a disk, exactly (where the number type is `double`, as with `Epick`,
+  /// in rational arithmetic).
   /// \returns whether `p` lies in the closed disk `i`.
   /// \param i a disk index, below `size()`.
   /// \param p a point.
   bool contains(std::size_t i, const Point& p) const
   {
-    return CGAL::compare(traits_.compute_squared_distance_2_object()(centre_[i], p), radius_[i] * radius_[i]) !=
-           LARGER;
+    if constexpr(std::is_floating_point<FT>::value) {
+      // In floating point the squares would round, overflow at 1e160 (inf against inf: a far
+      // point inside) and underflow at 1e-160 (0 against 0): compared exactly instead.
+      using ET = CGAL::Exact_rational;
+      const ET dx = ET(centre_[i].x()) - ET(p.x()), dy = ET(centre_[i].y()) - ET(p.y()), r = ET(radius_[i]);
+      return CGAL::compare(dx * dx + dy * dy, r * r) != LARGER;
+    } else {
+      return CGAL::compare(traits_.compute_squared_distance_2_object()(centre_[i], p), radius_[i] * radius_[i]) !=
+             LARGER;
+    }
   }
   /// \returns the disks in insertion order: `insertion_order()[k]` is the index of the k-th
   /// disk inserted, in the preprocessing and in every instance.
