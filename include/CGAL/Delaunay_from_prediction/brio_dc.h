@@ -242,7 +242,8 @@ inline void nearest_neighbour_graph_in_frame(const double* xy, std::size_t m, st
       auto consider = [&](std::uint32_t j) {
         const double dx = p[2 * j] - x, dy = p[2 * j + 1] - y;
         const double d = dx * dx + dy * dy;
-        const bool nearer = j != k && (d < b || (d == b && j < bk)); // never the point itself
+        // (Never the point itself; `&` and `|`: no branch on the comparisons.)
+        const bool nearer = (j != k) & ((d < b) | ((d == b) & (j < bk)));
         b = nearer ? d : b;
         bk = nearer ? j : bk;
       };
