@@ -16,6 +16,7 @@
 #include <CGAL/Delaunay_from_prediction/internal/input_check.h>
 #include <CGAL/Delaunay_from_prediction/internal/random.h>
 #include <CGAL/Delaunay_from_prediction/internal/spanning_tree_insertion.h>
+#include <CGAL/Delaunay_from_prediction/internal/spatial_order.h>
 #include <CGAL/Delaunay_from_prediction/internal/vertex_info.h>
 
 #include <CGAL/number_utils.h>
@@ -131,8 +132,10 @@ void read_grid_near(const Nng_cells& g, std::uint32_t base, double x, double y, 
       break;
 }
 
-inline void nearest_neighbour_graph(const double* xy, std::size_t m, std::vector<std::uint32_t>& order,
-                                    std::vector<std::uint32_t>& nn, int depth = 0, Nng_cells* grid_out = nullptr)
+// nearest_neighbour_graph() on coordinates in a frame where no squared distance that matters
+// overflows (see there); `depth` counts the refinements.
+inline void nearest_neighbour_graph_in_frame(const double* xy, std::size_t m, std::vector<std::uint32_t>& order,
+                                             std::vector<std::uint32_t>& nn, int depth, Nng_cells* grid_out)
 {
   constexpr std::size_t crowded = 32, budget = 512;
   order.resize(m);
@@ -146,14 +149,19 @@ inline void nearest_neighbour_graph(const double* xy, std::size_t m, std::vector
     ymin = (std::min)(ymin, xy[2 * k + 1]);
     ymax = (std::max)(ymax, xy[2 * k + 1]);
   }
-  const double width = xmax - xmin, height = ymax - ymin;
-  // Square cells of area 2 / density; a degenerate box gets a row or a column of cells.
+  // In the frame nearest_neighbour_graph() gives, the box's larger side is 0 or between 2^-74
+  // and 2^65; refined cells are smaller. A side below 2^-960 (a refined cell of points a few subnormals apart near the origin) counts as
+  // 0: cells per unit would overflow, and the squares of such differences underflow anyway.
+  const double width = xmax - xmin > 0x1p-960 ? xmax - xmin : 0, height = ymax - ymin > 0x1p-960 ? ymax - ymin : 0;
+  // Square cells of area 2 / density, sqrt(target * width / height) of them across (the
+  // product width * height would underflow in small cells); a degenerate box gets a row or a
+  // column of cells.
   const double target = (std::max)(1.0, double(m) / 2);
   std::size_t side_x = 1, side_y = 1;
   if(width > 0 && height > 0) {
-    const double cell = std::sqrt(width * height / target);
-    side_x = std::size_t((std::min)(4096.0, (std::max)(1.0, std::floor(width / cell))));
-    side_y = std::size_t((std::min)(4096.0, (std::max)(1.0, std::floor(height / cell))));
+    const double aspect = width / height; // an inf or 0 is clamped
+    side_x = std::size_t((std::min)(4096.0, (std::max)(1.0, std::floor(std::sqrt(target * aspect)))));
+    side_y = std::size_t((std::min)(4096.0, (std::max)(1.0, std::floor(std::sqrt(target / aspect)))));
   } else if(width > 0) {
     side_x = std::size_t((std::min)(double(1 << 22), target));
   } else if(height > 0) {
@@ -203,7 +211,7 @@ inline void nearest_neighbour_graph(const double* xy, std::size_t m, std::vector
         sub_of.assign(cells, no_rank);
       sub_of[c] = std::uint32_t(sub.size());
       sub.emplace_back();
-      nearest_neighbour_graph(p.data() + 2 * first, count, sub_order, sub_nn, depth + 1, &sub.back());
+      nearest_neighbour_graph_in_frame(p.data() + 2 * first, count, sub_order, sub_nn, depth + 1, &sub.back());
       moved.assign(order.begin() + std::ptrdiff_t(first), order.begin() + std::ptrdiff_t(first + count));
       sub_p.assign(p.begin() + std::ptrdiff_t(2 * first), p.begin() + std::ptrdiff_t(2 * (first + count)));
       for(std::size_t a = 0; a < count; ++a) {
@@ -234,8 +242,9 @@ inline void nearest_neighbour_graph(const double* xy, std::size_t m, std::vector
       // Branch-free: whether a candidate is nearer is not predictable.
       auto consider = [&](std::uint32_t j) {
         const double dx = p[2 * j] - x, dy = p[2 * j + 1] - y;
-        const double d = j != k ? dx * dx + dy * dy : std::numeric_limits<double>::infinity();
-        const bool nearer = d < b || (d == b && j < bk);
+        const double d = dx * dx + dy * dy;
+        // (Never the point itself; `&` and `|`: no branch on the comparisons.)
+        const bool nearer = (j != k) & ((d < b) | ((d == b) & (j < bk)));
         b = nearer ? d : b;
         bk = nearer ? j : bk;
       };
@@ -319,6 +328,10 @@ inline void nearest_neighbour_graph(const double* xy, std::size_t m, std::vector
         const double reach = double(r) * shorter + margin;
         searched = !any_cell || b <= reach * reach || read >= budget || b == 0;
       }
+      if(bk == no_rank && m > 1) { // no other point read (not with finite coordinates): any will do
+        bk = k == 0 ? 1 : k - 1;
+        b = std::numeric_limits<double>::infinity();
+      }
       best[k] = b;
       nn[k] = bk;
     }
@@ -333,6 +346,39 @@ inline void nearest_neighbour_graph(const double* xy, std::size_t m, std::vector
     grid.start.swap(start);
     *grid_out = std::move(grid);
   }
+}
+
+// The nearest-neighbour graph of the points xy[0..m) (see nearest_neighbour_graph_in_frame()).
+// Robust at any scale: if the box's larger side is not within 2^-64 .. 2^64 (squares of
+// distances would overflow to inf at 1e160, underflow to 0 at 1e-160, a width of the box
+// overflows between -1e308 and 1e308), the search runs on a copy of the coordinates scaled
+// by unit_scale() of the box, a power of two (exact), where the box's side is about 1: then
+// only points closer than 2^-511 of the box tie at distance 0. A tie, an approximate or
+// arbitrary neighbour only changes the insertion order: every point gets a neighbour other
+// than itself (for m > 1), so the graph is a functional graph whose every component has a
+// cycle, as the sampling of brio_dc_delaunay() needs.
+inline void nearest_neighbour_graph(const double* xy, std::size_t m, std::vector<std::uint32_t>& order,
+                                    std::vector<std::uint32_t>& nn)
+{
+  if(m == 0) {
+    order.clear();
+    nn.clear();
+    return;
+  }
+  Box box{xy[0], xy[0], xy[1], xy[1]};
+  for(std::size_t k = 1; k < m; ++k) {
+    box.xmin = (std::min)(box.xmin, xy[2 * k]);
+    box.xmax = (std::max)(box.xmax, xy[2 * k]);
+    box.ymin = (std::min)(box.ymin, xy[2 * k + 1]);
+    box.ymax = (std::max)(box.ymax, xy[2 * k + 1]);
+  }
+  const double scale = unit_scale(box);
+  if(scale >= 0x1p-64 && scale <= 0x1p64)
+    return nearest_neighbour_graph_in_frame(xy, m, order, nn, 0, nullptr);
+  std::vector<double> scaled(xy, xy + 2 * m);
+  for(double& c : scaled)
+    c *= scale;
+  nearest_neighbour_graph_in_frame(scaled.data(), m, order, nn, 0, nullptr);
 }
 
 } // namespace internal
@@ -361,13 +407,15 @@ not the paper's.
 The nearest-neighbour graphs are computed with a uniform grid of about two points a cell,
 crowded cells refined by grids of their own down to 6 levels (not \cgal's spatial searching,
 and not the linear-time algorithm of Chan that the paper's Theorem 1 cites; the grid's cells
-also order the insertion for locality), with distances in double precision and a search
-reading at most 512 points. The graph is exact (compared with a brute-force search in the
-tests, on uniform, clustered, graded, grid, collinear and duplicate points) unless a search
-runs out of its 512 points (hundreds of points at equal or nearly equal positions): then the
-neighbour is approximate, which costs time, never correctness. Each point is located by a
-visibility walk from its neighbour's vertex; a walk longer than about \f$\log_2 n + 8\f$ faces
-starts again, uncapped, from a vertex inserted near the point.
+also order the insertion for locality), with distances in double precision (on coordinates
+scaled by a power of two to their bounding box where squared distances would overflow or
+underflow) and a search reading at most 512 points. The graph is exact (compared with a
+brute-force search in the tests, on uniform, clustered, graded, grid, collinear and duplicate
+points) unless a search runs out of its 512 points (hundreds of points at equal or nearly equal
+positions) or points lie closer than \f$2^{-511}\f$ of the bounding box's size: then the
+neighbour is approximate, which costs time, never correctness: every point is inserted. Each
+point is located by a visibility walk from its neighbour's vertex; a walk longer than about
+\f$\log_2 n + 8\f$ faces starts again, uncapped, from a vertex inserted near the point.
 
 Complexity: the paper's Theorem 2 gives expected \f$O(n + f(n))\f$ time, \f$f(n)\f$ the time of
 a nearest-neighbour graph, for its sampling probability 1/2 and straight walks along the graph's
@@ -502,8 +550,9 @@ Statistics brio_dc_delaunay(const PointRange& points, DT& dt, const NamedParamet
           u = level.nn[u];
         }
         if(state[u] == s + 1) { // a new cycle through u: match u with its neighbour
+          // (A cycle of one point, which nearest_neighbour_graph() never gives, keeps it.)
           const std::uint32_t v = level.nn[u];
-          const bool keep_u = (random() & 1) != 0;
+          const bool keep_u = v == u || (random() & 1) != 0;
           level.in_next[u] = keep_u ? 1 : 0;
           if(v != u)
             level.in_next[v] = keep_u ? 0 : 1;
@@ -537,6 +586,16 @@ Statistics brio_dc_delaunay(const PointRange& points, DT& dt, const NamedParamet
   // along the graph's edges, both directions).
   std::vector<std::uint32_t> children_start, children, stack;
   std::vector<unsigned char> done;
+  // Inserts point i, located by a walk from vertex `from` (or by CGAL's location without one).
+  auto insert = [&](std::uint32_t i, Vertex_handle from) {
+    const std::size_t count = dt.number_of_vertices();
+    const Vertex_handle v = from != Vertex_handle()
+                                ? internal::insert_walking_from(dt, point[i], from, cap, vertex_grid, flip_stack, stats)
+                                : dt.insert(point[i]);
+    internal::record_index_info(v, original[i], dt.number_of_vertices() != count, stats.duplicate_points);
+    vertex[i] = v;
+    vertex_grid.record(point[i], v);
+  };
   for(std::size_t l = levels.size(); l-- > 0;) {
     const Level& level = levels[l];
     const std::size_t m = level.members.size();
@@ -565,15 +624,8 @@ Statistics brio_dc_delaunay(const PointRange& points, DT& dt, const NamedParamet
         auto visit = [&](std::uint32_t w) {
           if(done[w] == 2)
             return;
-          if(done[w] == 0) { // insert w, located from u
-            const std::uint32_t i = level.members[w];
-            const std::size_t count = dt.number_of_vertices();
-            const Vertex_handle v = internal::insert_walking_from(dt, point[i], vertex[level.members[u]], cap,
-                                                                  vertex_grid, flip_stack, stats);
-            internal::record_index_info(v, original[i], dt.number_of_vertices() != count, stats.duplicate_points);
-            vertex[i] = v;
-            vertex_grid.record(point[i], v);
-          }
+          if(done[w] == 0) // insert w, located from u
+            insert(level.members[w], vertex[level.members[u]]);
           done[w] = 2;
           stack.push_back(w);
         };
@@ -582,6 +634,12 @@ Statistics brio_dc_delaunay(const PointRange& points, DT& dt, const NamedParamet
           visit(children[c]);
       }
     }
+    // Every component of the graph has a point in the next sample (the matching on its
+    // cycle), so the search above reached every point; whatever the graph, a point it did not
+    // reach is inserted here, so that none is dropped.
+    for(std::uint32_t w = 0; w < m; ++w)
+      if(done[w] == 0)
+        insert(level.members[w], vertex_grid.near(point[level.members[w]]));
   }
   return stats;
   } // not a hierarchy

@@ -23,6 +23,7 @@
 #include <CGAL/Delaunay_from_prediction/internal/vertex_info.h>
 
 #include <CGAL/Delaunay_triangulation_2.h>
+#include <CGAL/Exact_rational.h>
 #include <CGAL/Triangulation_data_structure_2.h>
 #include <CGAL/Triangulation_vertex_base_with_info_2.h>
 #include <CGAL/number_utils.h>
@@ -159,15 +160,23 @@ public:
   /// \returns the radius of disk `i`.
   /// \param i a disk index, below `size()`.
   const FT& radius(std::size_t i) const { return radius_[i]; }
-  /// tests a point against a disk (exactly with a kernel whose constructions are exact; with
-  /// `Epick` the squared distance is rounded).
+  /// tests a point against a disk, exactly (where the number type is `double`, as with `Epick`,
+  /// in rational arithmetic).
   /// \returns whether `p` lies in the closed disk `i`.
   /// \param i a disk index, below `size()`.
   /// \param p a point.
   bool contains(std::size_t i, const Point& p) const
   {
-    return CGAL::compare(traits_.compute_squared_distance_2_object()(centre_[i], p), radius_[i] * radius_[i]) !=
-           LARGER;
+    if constexpr(std::is_floating_point<FT>::value) {
+      // In floating point the squares would round, overflow at 1e160 (inf against inf: a far
+      // point inside) and underflow at 1e-160 (0 against 0): compared exactly instead.
+      using ET = CGAL::Exact_rational;
+      const ET dx = ET(centre_[i].x()) - ET(p.x()), dy = ET(centre_[i].y()) - ET(p.y()), r = ET(radius_[i]);
+      return CGAL::compare(dx * dx + dy * dy, r * r) != LARGER;
+    } else {
+      return CGAL::compare(traits_.compute_squared_distance_2_object()(centre_[i], p), radius_[i] * radius_[i]) !=
+             LARGER;
+    }
   }
   /// \returns the disks in insertion order: `insertion_order()[k]` is the index of the k-th
   /// disk inserted, in the preprocessing and in every instance.
@@ -308,10 +317,13 @@ private:
       if(!(max_radius < std::numeric_limits<double>::infinity())) // a radius too large for double
         max_radius = 0;
       const internal::Box box = internal::bounding_box(n, [&](std::size_t i) -> const Point& { return centre_[i]; });
-      xmin_ = box.xmin - max_radius;
-      xmax_ = box.xmax + max_radius;
-      ymin_ = box.ymin - max_radius;
-      ymax_ = box.ymax + max_radius;
+      // Widened by the radius, but finite: a box to infinity would give the grid no cells.
+      const double huge = (std::numeric_limits<double>::max)();
+      xmin_ = (std::max)(box.xmin - max_radius, -huge);
+      xmax_ = (std::min)(box.xmax + max_radius, huge);
+      ymin_ = (std::max)(box.ymin - max_radius, -huge);
+      ymax_ = (std::min)(box.ymax + max_radius, huge);
+      scale_ = internal::unit_scale(box);
     }
     compute_hints();
   }
@@ -321,7 +333,8 @@ private:
   // fan of its new vertex (the nearest neighbour of a point is a Delaunay neighbour). Each
   // centre is located from the previous one (spatial order) or from the last centre inserted
   // in its grid cell (random order, where the previous centre is anywhere). The distances are
-  // compared in double: a hint only chooses where a walk starts.
+  // compared in double, on coordinates scaled to the box (squared_distance_in_double()): a
+  // hint only chooses where a walk starts.
   void compute_hints()
   {
     using Vb = Triangulation_vertex_base_with_info_2<std::uint32_t, Gt>;
@@ -339,8 +352,8 @@ private:
       const Point& c = centre_[order_[r]];
       Vertex_handle start = grid.near(c);
       if(start == Vertex_handle() ||
-         (previous != Vertex_handle() && internal::squared_distance_in_double(previous->point(), c) <
-                                             internal::squared_distance_in_double(start->point(), c)))
+         (previous != Vertex_handle() && internal::squared_distance_in_double(previous->point(), c, scale_) <
+                                             internal::squared_distance_in_double(start->point(), c, scale_)))
         start = previous;
       const std::size_t count = dt.number_of_vertices();
       const Vertex_handle v =
@@ -360,7 +373,7 @@ private:
           do {
             if(dt.is_infinite(w))
               continue;
-            const double d = internal::squared_distance_in_double(w->point(), c);
+            const double d = internal::squared_distance_in_double(w->point(), c, scale_);
             if(d < best_distance) {
               best_distance = d;
               best = w->info();
@@ -382,6 +395,7 @@ private:
   std::vector<std::uint32_t> hint_rank_; // hint_rank_[r]: the rank of the hint of the disk of rank r (r > 0)
   std::vector<std::uint32_t> rank_;      // rank_[i]: the rank of disk i (inverse of order_)
   double xmin_ = 0, xmax_ = 0, ymin_ = 0, ymax_ = 0;
+  double scale_ = 1; // unit_scale() of the centres' box, for the distances of compute_hints()
 };
 
 } // namespace Delaunay_from_prediction

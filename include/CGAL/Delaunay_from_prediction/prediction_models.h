@@ -20,6 +20,7 @@
 #include <CGAL/Delaunay_from_prediction/internal/lawson_flip.h>
 #include <CGAL/Delaunay_from_prediction/internal/random.h>
 #include <CGAL/Delaunay_from_prediction/internal/rebuild.h>
+#include <CGAL/Delaunay_from_prediction/internal/spatial_order.h>
 
 #include <CGAL/Kernel_traits.h>
 
@@ -29,6 +30,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <iterator>
+#include <limits>
 #include <stdexcept>
 #include <utility>
 #include <vector>
@@ -332,15 +334,22 @@ std::vector<Indexed_triangle> moved_points_prediction(const PointRange& points, 
     y0 = (std::min)(y0, CGAL::to_double(p.y()));
     y1 = (std::max)(y1, CGAL::to_double(p.y()));
   }
-  const double area = (x1 - x0) * (y1 - y0);
-  const double spacing = area > 0 ? std::sqrt(area / double(n)) : std::hypot(x1 - x0, y1 - y0) / double(n);
-  const double sigma = noise * spacing;
+  // The spacing in coordinates scaled by unit_scale() (the box's area and sides would
+  // overflow or underflow at 1e+-200); a noise that takes a point beyond the largest double
+  // leaves it there.
+  const double scale = internal::unit_scale(x0, x1, y0, y1);
+  const double width = x1 * scale - x0 * scale, height = y1 * scale - y0 * scale;
+  const double area = width * height;
+  const double spacing = area > 0 ? std::sqrt(area / double(n)) : std::hypot(width, height) / double(n);
+  const double sigma = noise * spacing; // scaled
+  const double huge = (std::numeric_limits<double>::max)();
   internal::Splitmix64 random{seed};
   std::vector<Point> moved;
   moved.reserve(n);
   for(const auto& p : points) {
-    const double dx = sigma * random.normal(), dy = sigma * random.normal();
-    moved.emplace_back(CGAL::to_double(p.x()) + dx, CGAL::to_double(p.y()) + dy);
+    const double dx = sigma * random.normal() / scale, dy = sigma * random.normal() / scale;
+    moved.emplace_back(std::clamp(CGAL::to_double(p.x()) + dx, -huge, huge),
+                       std::clamp(CGAL::to_double(p.y()) + dy, -huge, huge));
   }
   return delaunay_triangles(moved);
 }

@@ -16,6 +16,7 @@
 #include <CGAL/Delaunay_from_prediction/internal/random.h>
 #include <CGAL/Delaunay_from_prediction/internal/rebuild.h>
 #include <CGAL/Delaunay_from_prediction/internal/spanning_tree_insertion.h>
+#include <CGAL/Delaunay_from_prediction/internal/spatial_order.h>
 
 #include <CGAL/Delaunay_triangulation_2.h>
 #include <CGAL/Triangulation_data_structure_2.h>
@@ -62,13 +63,14 @@ bool order_looks_spatial(std::size_t n, PointAt point_at)
   if(n < 4096)
     return false; // small: sorting costs nothing
   const Box box = bounding_box(n, point_at);
-  const double area_per_point = (box.xmax - box.xmin) * (box.ymax - box.ymin) / double(n);
+  // Lengths and area on coordinates scaled by unit_scale(): neither overflows.
+  const double scale = unit_scale(box);
+  const double area_per_point =
+      (box.xmax * scale - box.xmin * scale) * (box.ymax * scale - box.ymin * scale) / double(n);
   std::vector<double> squared;
   for(std::size_t s = 0; s < 255; ++s) {
     const std::size_t k = s * (n - 1) / 255;
-    const double dx = CGAL::to_double(point_at(k).x()) - CGAL::to_double(point_at(k + 1).x());
-    const double dy = CGAL::to_double(point_at(k).y()) - CGAL::to_double(point_at(k + 1).y());
-    squared.push_back(dx * dx + dy * dy);
+    squared.push_back(squared_distance_in_double(point_at(k), point_at(k + 1), scale));
   }
   std::nth_element(squared.begin(), squared.begin() + 127, squared.end());
   return squared[127] <= 16 * area_per_point;
@@ -132,7 +134,9 @@ void randomized_removal_order(const DT& dt, const std::vector<unsigned char>& pa
   // a point of p's part is not pushed but kept as the best candidate, and the search ends when
   // no pushed point is nearer than the candidate (then no point of the part is: the paper's
   // "Fact", points in a disk reach any point on its circle along Delaunay edges inside it).
-  // Distances are compared in double: the neighbour only chooses where a walk starts.
+  // Distances are compared in double, on coordinates scaled to the box of the points
+  // (squared_distance_in_double()): the neighbour only chooses where a walk starts.
+  const double scale = unit_scale(bounding_box(n, [&](std::size_t k) -> const Point& { return vertex[k]->point(); }));
   using Entry = std::pair<double, std::uint32_t>;
   struct Search
   {
@@ -152,7 +156,7 @@ void randomized_removal_order(const DT& dt, const std::vector<unsigned char>& pa
       const std::uint32_t x = w->info();
       if(x != no_rank && s.seen[x] != mark) {
         s.seen[x] = mark;
-        const double d = squared_distance_in_double(w->point(), centre);
+        const double d = squared_distance_in_double(w->point(), centre, scale);
         if(part[x] == part[s.p]) {
           if(d < s.best) {
             s.best = d;

@@ -37,6 +37,7 @@
 #include <CGAL/Delaunay_from_prediction/internal/predicates.h>
 #include <CGAL/Delaunay_from_prediction/internal/random.h>
 #include <CGAL/Delaunay_from_prediction/internal/rebuild.h>
+#include <CGAL/Delaunay_from_prediction/internal/spatial_order.h>
 #include <CGAL/Delaunay_from_prediction/internal/vertex_info.h>
 
 #include <CGAL/number_utils.h>
@@ -267,15 +268,11 @@ public:
 private:
   void set_up(std::size_t n, double xmin, double xmax, double ymin, double ymax)
   {
-    xmin_ = xmin;
-    xmax_ = xmax;
-    ymin_ = ymin;
-    ymax_ = ymax;
     // Coarse cells are 8 x 8 fine cells.
     coarse_side_ = (std::max)(std::size_t(1), std::size_t(std::sqrt(double(n) / 256)));
     fine_side_ = 8 * coarse_side_;
-    sx_ = xmax_ > xmin_ ? double(fine_side_) / (xmax_ - xmin_) : 0;
-    sy_ = ymax_ > ymin_ ? double(fine_side_) / (ymax_ - ymin_) : 0;
+    column_ = Grid_axis(xmin, xmax, fine_side_);
+    row_ = Grid_axis(ymin, ymax, fine_side_);
     fine_.assign(fine_side_ * fine_side_, Vertex_handle());
     coarse_.assign(coarse_side_ * coarse_side_, Vertex_handle());
   }
@@ -283,13 +280,11 @@ private:
   template <class Point>
   void cell(const Point& p, std::size_t& cx, std::size_t& cy) const
   {
-    const double fx = (CGAL::to_double(p.x()) - xmin_) * sx_, fy = (CGAL::to_double(p.y()) - ymin_) * sy_;
-    const double last = double(fine_side_ - 1); // also catches inf (tiny boxes); NaN gives 0
-    cx = std::size_t(fx > 0 ? (std::min)(fx, last) : 0);
-    cy = std::size_t(fy > 0 ? (std::min)(fy, last) : 0);
+    cx = column_(CGAL::to_double(p.x()));
+    cy = row_(CGAL::to_double(p.y()));
   }
 
-  double xmin_ = 0, xmax_ = 0, ymin_ = 0, ymax_ = 0, sx_ = 0, sy_ = 0;
+  Grid_axis column_, row_; // robust at any scale (see Grid_axis)
   std::size_t fine_side_ = 8, coarse_side_ = 1;
   std::vector<Vertex_handle> fine_, coarse_;
 };
@@ -349,18 +344,17 @@ bool edges_look_random(PointIterator points, std::size_t n, const std::vector<st
   if(n < 4096 || ends.empty())
     return false;
   const Box box = bounding_box(n, [&](std::size_t k) -> decltype(points[0]) { return points[k]; });
-  const double area_per_point = (box.xmax - box.xmin) * (box.ymax - box.ymin) / double(n);
+  // Lengths and area on coordinates scaled by unit_scale(): neither overflows.
+  const double scale = unit_scale(box);
+  const double area_per_point =
+      (box.xmax * scale - box.xmin * scale) * (box.ymax * scale - box.ymin * scale) / double(n);
   if(!(area_per_point > 0))
     return false;
   Splitmix64 random{seed};
   std::vector<double> squared_lengths;
   for(int s = 0; s < 255; ++s) {
     const std::size_t k = 2 * random.below(ends.size() / 2);
-    const auto& p = points[ends[k]];
-    const auto& q = points[ends[k + 1]];
-    const double dx = CGAL::to_double(p.x()) - CGAL::to_double(q.x());
-    const double dy = CGAL::to_double(p.y()) - CGAL::to_double(q.y());
-    squared_lengths.push_back(dx * dx + dy * dy);
+    squared_lengths.push_back(squared_distance_in_double(points[ends[k]], points[ends[k + 1]], scale));
   }
   std::nth_element(squared_lengths.begin(), squared_lengths.begin() + 127, squared_lengths.end());
   return squared_lengths[127] > 32 * 32 * area_per_point;

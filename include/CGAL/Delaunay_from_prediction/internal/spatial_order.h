@@ -19,6 +19,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 #include <utility>
 #include <vector>
 
@@ -47,15 +48,77 @@ Box bounding_box(std::size_t n, PointAt point_at)
   return b;
 }
 
-// The squared distance of two points, in double: for choosing where a search starts, never
-// for a decision the result depends on.
-template <class Point>
-double squared_distance_in_double(const Point& a, const Point& b)
+// Coordinates near 1e+-300 are valid input, and double arithmetic on them fails three ways:
+// a width of the box overflows (points at -1e308 and 1e308), squared distances overflow (at
+// 1e160) or underflow to 0 (at 1e-160: distinct points tie at distance 0), and a number of
+// cells divided by a subnormal width is inf (then (x - xmin) * inf is NaN at x = xmin, and
+// casting inf or NaN to an integer is undefined). Wherever double arithmetic only steers (a
+// grid cell, a hint, a guess), it runs on coordinates scaled by unit_scale() of their box:
+// a power of two, so the scaled coordinates are exact (but below 2^-1022 of the box, where
+// nothing is steered), and the box's larger side becomes about 1, so that no difference and
+// no square of one overflows, and squares underflow only for points closer than 2^-511 of
+// the box (a spread no grid resolves anyway). Every result decision is left to the kernel's
+// exact predicates.
+
+// A power of two s such that the larger side of the box, times s, is in [1, 2] (or in
+// [2^-74, 2^-72] for a box whose sides are only a few subnormals: s is at most 2^1000); 1 for
+// a box that is a point or is not finite. Exact on any finite box: a side that overflows is
+// measured on halved coordinates.
+inline double unit_scale(double xmin, double xmax, double ymin, double ymax)
 {
-  const double dx = CGAL::to_double(a.x()) - CGAL::to_double(b.x());
-  const double dy = CGAL::to_double(a.y()) - CGAL::to_double(b.y());
+  const double side = (std::max)(xmax - xmin, ymax - ymin);
+  int exponent = 0;
+  if(side <= (std::numeric_limits<double>::max)()) {
+    if(!(side > 0))
+      return 1;
+    exponent = std::ilogb(side);
+  } else {
+    const double half = (std::max)(xmax * 0.5 - xmin * 0.5, ymax * 0.5 - ymin * 0.5);
+    if(!(half <= (std::numeric_limits<double>::max)()))
+      return 1;
+    exponent = std::ilogb(half) + 1;
+  }
+  return std::ldexp(1.0, -(std::max)(exponent, -1000));
+}
+
+inline double unit_scale(const Box& b) { return unit_scale(b.xmin, b.xmax, b.ymin, b.ymax); }
+
+// The squared distance of two points, in double, on coordinates times `scale` (unit_scale()
+// of a box holding the points, so that it neither overflows nor underflows but for points
+// closer than 2^-511 of the box): for choosing where a search starts, never for a decision
+// the result depends on.
+template <class Point>
+double squared_distance_in_double(const Point& a, const Point& b, double scale)
+{
+  const double dx = CGAL::to_double(a.x()) * scale - CGAL::to_double(b.x()) * scale;
+  const double dy = CGAL::to_double(a.y()) * scale - CGAL::to_double(b.y()) * scale;
   return dx * dx + dy * dy;
 }
+
+// The cells of one axis of a grid: `cells` equal cells over [lo, hi], coordinates beyond
+// falling in the end cells. Robust for any lo <= hi: the coordinates are scaled by
+// unit_scale() of the interval first, so the number of cells per unit is finite for a
+// subnormal width and a width that overflows, and (x - lo) * cells per unit is never NaN,
+// while a width of 0 gives 0 cells per unit (one cell); the guard `f > 0` maps -inf to cell 0
+// and the clamp maps inf to the last before the cast.
+struct Grid_axis
+{
+  double scale = 1, lo = 0, per_unit = 0, last = 0;
+
+  Grid_axis() = default;
+  Grid_axis(double lo_, double hi_, std::size_t cells)
+      : scale(unit_scale(lo_, hi_, 0, 0)), lo(lo_ * scale), last(double(cells - 1))
+  {
+    const double width = hi_ * scale - lo;
+    per_unit = width > 0 ? double(cells) / width : 0;
+  }
+
+  std::size_t operator()(double x) const
+  {
+    const double f = (x * scale - lo) * per_unit;
+    return std::size_t(f > 0 ? (std::min)(f, last) : 0);
+  }
+};
 
 // A grid cell with more points than this (the grids aim at four) is sorted again.
 constexpr std::size_t crowded_cell = 64;
@@ -100,16 +163,12 @@ void sort_serpentine(const Index* first, const Index* last, Index* out, PointAt 
   const std::size_t side = depth == 0 ? (std::min)(std::size_t(1) << 12, (std::max)(std::size_t(1), fit))
                                       : (std::max)(std::size_t(2), fit);
   const std::size_t cells = side * side;
-  const double sx = xmax > xmin ? double(side) / (xmax - xmin) : 0;
-  const double sy = ymax > ymin ? double(side) / (ymax - ymin) : 0;
-  const double last_cell = double(side - 1); // also catches inf (tiny boxes); NaN gives 0
+  const Grid_axis column(xmin, xmax, side), row(ymin, ymax, side);
   std::uint64_t state = 0x5eed5eed5eedull;
   std::vector<std::uint32_t> key(m), start((biased_rounds ? brio_rounds : 1) * cells + 1, 0);
   for(std::size_t k = 0; k < m; ++k) {
     const auto& p = point_at(first[k]);
-    const double fx = (CGAL::to_double(p.x()) - xmin) * sx, fy = (CGAL::to_double(p.y()) - ymin) * sy;
-    const std::size_t cx = std::size_t(fx > 0 ? (std::min)(fx, last_cell) : 0);
-    const std::size_t cy = std::size_t(fy > 0 ? (std::min)(fy, last_cell) : 0);
+    const std::size_t cx = column(CGAL::to_double(p.x())), cy = row(CGAL::to_double(p.y()));
     std::uint32_t cell = std::uint32_t(cy * side + ((cy & 1) ? side - 1 - cx : cx));
     if(biased_rounds)
       cell += std::uint32_t((brio_rounds - 1 - brio_round(state)) * cells);
