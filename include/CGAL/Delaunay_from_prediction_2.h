@@ -404,6 +404,9 @@ Statistics delaunay_from_prediction(const PointRange& points, const FaceRange& f
     stats.fell_back = true;
     stats.faces_certified = 0;
     stats.points_reinserted = 0;
+    // The rebuild counts every duplicate again: those the local repair merged before it gave
+    // up are not in the fresh triangulation's count yet.
+    stats.duplicate_points = 0;
     result.tds().clear(); // release the partial import before building anew
     const std::vector<std::uint32_t> grid_order = std::move(imported.points_in_grid_order);
     imported = internal::Imported_prediction<DT>();

@@ -404,6 +404,9 @@ public:
         open_[k].first->vertex(ccw(open_[k].second))->set_face(open_[k].first);
 
     // Ears. Polygon edges pair with their open half-edge, diagonals with each other.
+    // `linked` marks the open half-edges that get a neighbour: all of them, when the plan is
+    // complete (every live loop filled, paired, or the outer one).
+    std::vector<char> linked(open_.size(), 0);
     std::vector<std::pair<std::uint64_t, Edge>> diagonals;
     for(const Loop& loop : loops_) {
       if(loop.dead)
@@ -412,6 +415,7 @@ public:
         const Edge& a = open_[loop.halfedges[0]];
         const Edge& b = open_[loop.halfedges[1]];
         tds_.set_adjacency(a.first, a.second, b.first, b.second);
+        linked[loop.halfedges[0]] = linked[loop.halfedges[1]] = 1;
         stack.push_back(a);
         continue;
       }
@@ -424,6 +428,7 @@ public:
           if(ear.open[i] != none) {
             const Edge& e = open_[ear.open[i]];
             tds_.set_adjacency(f, i, e.first, e.second);
+            linked[ear.open[i]] = 1;
           } else {
             diagonals.emplace_back(ear.diagonal[i], Edge(f, i));
           }
@@ -434,6 +439,8 @@ public:
               [](const auto& a, const auto& b) { return a.first < b.first; });
     for(std::size_t k = 0; k + 1 < diagonals.size(); k += 2) {
       CGAL_assertion(diagonals[k].first == diagonals[k + 1].first);
+      if(diagonals[k].first != diagonals[k + 1].first)
+        complete_ = false;
       tds_.set_adjacency(diagonals[k].second.first, diagonals[k].second.second,
                          diagonals[k + 1].second.first, diagonals[k + 1].second.second);
     }
@@ -450,11 +457,15 @@ public:
         created_.push_back(outside[k]);
         created_set_.insert(&*outside[k], 0);
         tds_.set_adjacency(outside[k], 2, e.first, e.second);
+        linked[outer_cycle[k]] = 1;
       }
       for(std::size_t k = 0; k < m; ++k)
         tds_.set_adjacency(outside[k], 1, outside[(k + 1) % m], 0);
       infinite_->set_face(outside[0]);
     }
+    for(std::size_t k = 0; k < open_.size(); ++k)
+      if(alive_[k] && !linked[k])
+        complete_ = false;
     committed_ = true;
   }
 
@@ -462,6 +473,10 @@ public:
   // result is a triangulation (see the argument at the top of this file).
   bool finish_hull(std::vector<Edge>& stack, std::size_t& flips)
   {
+    // An open half-edge left without a neighbour (a loop the plan neither filled nor carved)
+    // leaves a fan open: no walk around its vertices may start, and no triangulation is there.
+    if(!complete_)
+      return false;
     if(hull_is_convex_and_wound_once(tr_))
       return true;
     std::vector<const void*> made;
@@ -853,6 +868,10 @@ private:
                   compare_xy(u, shared) != compare_xy(shared, w);
           }
           if(bad) {
+            // The faces on both edges go too: the stars may have been carved already (a vertex
+            // with several fans keeps the others), and the next round must see a change.
+            remove(open_[loop[e]].first);
+            remove(open_[loop[f]].first);
             for(const std::size_t k : {e, (e + 1) % m, f, (f + 1) % m})
               carve_star(tail_vertex(loop[k]));
             found = true;
@@ -1094,7 +1113,7 @@ private:
   Tds& tds_;
   const Vertex_handle infinite_;
   const bool keep_undo_log_;
-  bool outer_open_ = false, committed_ = false, may_have_several_fans_ = false;
+  bool outer_open_ = false, committed_ = false, may_have_several_fans_ = false, complete_ = true;
   std::size_t rounds_ = 0, removed_finite_ = 0, diagonal_base_ = 0, outer_ = none, groups_ = 0, traced_ = 0;
 
   Address_table<std::size_t> removed_;   // carved face -> position in removed_list_

@@ -100,14 +100,26 @@ void sort_serpentine(const Index* first, const Index* last, Index* out, PointAt 
   const std::size_t side = depth == 0 ? (std::min)(std::size_t(1) << 12, (std::max)(std::size_t(1), fit))
                                       : (std::max)(std::size_t(2), fit);
   const std::size_t cells = side * side;
-  const double sx = xmax > xmin ? double(side) / (xmax - xmin) : 0;
-  const double sy = ymax > ymin ? double(side) / (ymax - ymin) : 0;
-  const double last_cell = double(side - 1); // also catches inf (tiny boxes); NaN gives 0
+  // Cell of x: (x/2 - xmin/2) * u * v * sx. Halves, so that no difference overflows (a box
+  // from -1e308 to 1e308); for a box too small for side / width to be finite (widths near the
+  // smallest normal double), the differences are first scaled by u * v = 2^e (exact, each
+  // factor finite), so that no point lands in the last cell.
+  auto axis = [&](double lo, double hi, double& u, double& v) {
+    const double width = hi / 2 - lo / 2;
+    const int e = width > 0 && width < 0x1p-900 ? -std::ilogb(width) : 0;
+    u = std::ldexp(1.0, e / 2);
+    v = std::ldexp(1.0, e - e / 2);
+    return width > 0 ? double(side) / (width * u * v) : 0;
+  };
+  double ux, vx, uy, vy;
+  const double sx = axis(xmin, xmax, ux, vx), sy = axis(ymin, ymax, uy, vy);
+  const double last_cell = double(side - 1); // also catches inf; NaN gives 0
   std::uint64_t state = 0x5eed5eed5eedull;
   std::vector<std::uint32_t> key(m), start((biased_rounds ? brio_rounds : 1) * cells + 1, 0);
   for(std::size_t k = 0; k < m; ++k) {
     const auto& p = point_at(first[k]);
-    const double fx = (CGAL::to_double(p.x()) - xmin) * sx, fy = (CGAL::to_double(p.y()) - ymin) * sy;
+    const double fx = (CGAL::to_double(p.x()) / 2 - xmin / 2) * ux * vx * sx;
+    const double fy = (CGAL::to_double(p.y()) / 2 - ymin / 2) * uy * vy * sy;
     const std::size_t cx = std::size_t(fx > 0 ? (std::min)(fx, last_cell) : 0);
     const std::size_t cy = std::size_t(fy > 0 ? (std::min)(fy, last_cell) : 0);
     std::uint32_t cell = std::uint32_t(cy * side + ((cy & 1) ? side - 1 - cx : cx));
