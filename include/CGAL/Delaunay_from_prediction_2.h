@@ -36,6 +36,7 @@
 #include <CGAL/Named_function_parameters.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
@@ -186,10 +187,12 @@ const char* carve_in_place(Triangulation& tr, const std::vector<typename Triangu
     for(int i = 0; i < 3; ++i) {
       const auto& p = f->vertex(ccw(i))->point();
       const auto& q = f->vertex(cw(i))->point();
-      const double dx = CGAL::to_double(p.x()) - CGAL::to_double(q.x());
-      const double dy = CGAL::to_double(p.y()) - CGAL::to_double(q.y());
-      if(dx * dx + dy * dy > longest) {
-        longest = dx * dx + dy * dy;
+      // Halves and hypot: no overflow near 1e308, no underflow to 0 near the smallest
+      // normal double (only the amount carved depends on it).
+      const double length = std::hypot(CGAL::to_double(p.x()) / 2 - CGAL::to_double(q.x()) / 2,
+                                       CGAL::to_double(p.y()) / 2 - CGAL::to_double(q.y()) / 2);
+      if(length > longest) {
+        longest = length;
         crossing = i;
       }
     }

@@ -47,6 +47,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
+#include <limits>
 #include <memory>
 #include <type_traits>
 #include <utility>
@@ -148,10 +149,11 @@ void reinsert_vertex_objects(Triangulation& tr, const std::vector<typename Trian
   sort_along_grid(order, [&](std::size_t k) -> const Point& { return vertices[k]->point(); }, false);
   Face_handle hint = tr.infinite_vertex()->face();
   const Point* previous = nullptr; // the point inserted last, at `hint`
-  auto squared_distance = [](const Point& a, const Point& b) {
-    const double dx = CGAL::to_double(a.x()) - CGAL::to_double(b.x());
-    const double dy = CGAL::to_double(a.y()) - CGAL::to_double(b.y());
-    return dx * dx + dy * dy;
+  // Only to choose where a walk starts. Halves and hypot: no overflow near 1e308, no
+  // underflow to 0 near the smallest normal double.
+  auto distance = [](const Point& a, const Point& b) {
+    return std::hypot(CGAL::to_double(a.x()) / 2 - CGAL::to_double(b.x()) / 2,
+                      CGAL::to_double(a.y()) / 2 - CGAL::to_double(b.y()) / 2);
   };
   for(const std::size_t k : order) {
     const Vertex_handle v = vertices[k];
@@ -163,7 +165,7 @@ void reinsert_vertex_objects(Triangulation& tr, const std::vector<typename Trian
     // of the points of 1e6 relabelled, walks from those neighbours took a third of the call.
     if(near != nullptr && (*near)[k] != Vertex_handle() && (*near)[k]->face() != Face_handle() &&
        (previous == nullptr ||
-        squared_distance((*near)[k]->point(), v->point()) < squared_distance(*previous, v->point())))
+        distance((*near)[k]->point(), v->point()) < distance(*previous, v->point())))
       hint = (*near)[k]->face();
     const Face_handle loc = base.locate(v->point(), lt, li, hint);
     if(lt == Base::VERTEX) {
@@ -772,7 +774,8 @@ private:
         }
         const Comparison_result c = compare_xy(tail_point(loop.halfedges[loop.lowest]),
                                                tail_point(loops_[outer_].halfedges[loops_[outer_].lowest]));
-        if(c == SMALLER || (c == EQUAL && area(loop.halfedges) > area(loops_[outer_].halfedges)))
+        if(c == SMALLER ||
+           (c == EQUAL && encloses_more(loop.halfedges, loops_[outer_].halfedges, tail_point(loop.halfedges[loop.lowest]))))
           outer_ = l;
       }
       if(outer_ == none)
@@ -815,11 +818,17 @@ private:
       ymax = (std::max)(ymax, CGAL::to_double(q->y()));
     }
     const std::size_t side = (std::max)(std::size_t(1), std::size_t(std::sqrt(double(m))));
-    const double margin = 1e-9 * ((xmax - xmin) + (ymax - ymin)) + 1e-300;
-    const double sx = xmax > xmin ? double(side) / (xmax - xmin) : 0, sy = ymax > ymin ? double(side) / (ymax - ymin) : 0;
-    auto cell = [&](double v, double lo, double scale) {
-      const double c = (v - lo) * scale;
-      return c <= 0 ? std::size_t(0) : (std::min)(side - 1, std::size_t(c));
+    // Boxes widened by far more than the rounding of to_double (relative to the coordinates,
+    // plus the smallest subnormal); cells as the fraction (v - lo) / (hi - lo) of halves, which
+    // neither overflows (coordinates near +-1e308) nor makes a scale overflow (boxes near the
+    // smallest normal double). Only which pairs are tested depends on this: a pair that meets
+    // shares a cell, the tests are exact.
+    const double largest = (std::max)((std::max)(std::fabs(xmin), std::fabs(xmax)), (std::max)(std::fabs(ymin), std::fabs(ymax)));
+    const double margin = 1e-9 * (xmax / 2 - xmin / 2 + ymax / 2 - ymin / 2) + 1e-15 * largest +
+                          std::numeric_limits<double>::denorm_min();
+    auto cell = [&](double v, double lo, double hi) {
+      const double c = (v / 2 - lo / 2) / (hi / 2 - lo / 2) * double(side);
+      return !(c > 0) ? std::size_t(0) : !(c < double(side - 1)) ? side - 1 : std::size_t(c);
     };
     std::vector<std::vector<std::size_t>> grid(side * side);
     for(std::size_t k = 0; k < m; ++k) {
@@ -829,8 +838,8 @@ private:
       const double x1 = (std::max)(CGAL::to_double(a.x()), CGAL::to_double(b.x())) + margin;
       const double y0 = (std::min)(CGAL::to_double(a.y()), CGAL::to_double(b.y())) - margin;
       const double y1 = (std::max)(CGAL::to_double(a.y()), CGAL::to_double(b.y())) + margin;
-      for(std::size_t cx = cell(x0, xmin, sx); cx <= cell(x1, xmin, sx); ++cx)
-        for(std::size_t cy = cell(y0, ymin, sy); cy <= cell(y1, ymin, sy); ++cy)
+      for(std::size_t cx = cell(x0, xmin, xmax); cx <= cell(x1, xmin, xmax); ++cx)
+        for(std::size_t cy = cell(y0, ymin, ymax); cy <= cell(y1, ymin, ymax); ++cy)
           grid[cy * side + cx].push_back(k);
     }
     // Closed segments [a, b] and [c, d] meet.
@@ -880,16 +889,35 @@ private:
     return found;
   }
 
-  // Twice the signed area of a loop, in double (only to tell an island from the outer loop).
-  double area(const std::vector<std::size_t>& loop) const
+  // Whether loop `a` encloses a larger area than loop `b`, both through the point `o`, in
+  // double (only to tell an island from the outer loop). The coordinates are taken relative
+  // to `o` (halves: no overflow) and scaled by a power of two that brings the largest to
+  // about 1, so that the cross products neither overflow (coordinates near 1e154 and beyond)
+  // nor vanish (near the smallest normal double).
+  bool encloses_more(const std::vector<std::size_t>& a, const std::vector<std::size_t>& b, const Point& o) const
   {
-    double sum = 0;
-    for(std::size_t k = 0; k < loop.size(); ++k) {
-      const Point& p = tail_point(loop[k]);
-      const Point& q = tail_point(loop[(k + 1) % loop.size()]);
-      sum += CGAL::to_double(p.x()) * CGAL::to_double(q.y()) - CGAL::to_double(q.x()) * CGAL::to_double(p.y());
-    }
-    return sum;
+    const double ox = CGAL::to_double(o.x()) / 2, oy = CGAL::to_double(o.y()) / 2;
+    double largest = 0;
+    for(const std::vector<std::size_t>* loop : {&a, &b})
+      for(const std::size_t h : *loop) {
+        const Point& p = tail_point(h);
+        largest = (std::max)({largest, std::fabs(CGAL::to_double(p.x()) / 2 - ox),
+                              std::fabs(CGAL::to_double(p.y()) / 2 - oy)});
+      }
+    const int e = largest > 0 && std::isfinite(largest) ? -std::ilogb(largest) : 0;
+    const double u = std::ldexp(1.0, e / 2), v = std::ldexp(1.0, e - e / 2);
+    auto area = [&](const std::vector<std::size_t>& loop) {
+      double sum = 0;
+      for(std::size_t k = 0; k < loop.size(); ++k) {
+        const Point& p = tail_point(loop[k]);
+        const Point& q = tail_point(loop[(k + 1) % loop.size()]);
+        const double px = (CGAL::to_double(p.x()) / 2 - ox) * u * v, py = (CGAL::to_double(p.y()) / 2 - oy) * u * v;
+        const double qx = (CGAL::to_double(q.x()) / 2 - ox) * u * v, qy = (CGAL::to_double(q.y()) / 2 - oy) * u * v;
+        sum += px * qy - qx * py;
+      }
+      return sum;
+    };
+    return area(a) > area(b);
   }
 
   std::size_t lowest(const std::vector<std::size_t>& loop) const
