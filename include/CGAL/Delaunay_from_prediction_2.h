@@ -474,13 +474,7 @@ Statistics delaunay_from_prediction(const PointRange& points, const FaceRange& f
     stats.carve_rounds = (std::max)(stats.carve_rounds, repair->rounds());
     if(why != nullptr)
       return build_from_scratch(why);
-#ifdef DFP_DEBUG
-    debug_check(result, "after import");
-#endif
     repair->commit(stack);
-#ifdef DFP_DEBUG
-    debug_check(result, "after commit");
-#endif
     if(!repair->finish_hull(stack, stats.flips))
       return build_from_scratch("the kept faces and the filled holes do not form a triangulation");
     std::size_t duplicates = 0;
