@@ -38,6 +38,7 @@
 #include <CGAL/Named_function_parameters.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
@@ -188,10 +189,12 @@ const char* carve_in_place(Triangulation& tr, const std::vector<typename Triangu
     for(int i = 0; i < 3; ++i) {
       const auto& p = f->vertex(ccw(i))->point();
       const auto& q = f->vertex(cw(i))->point();
-      const double dx = CGAL::to_double(p.x()) - CGAL::to_double(q.x());
-      const double dy = CGAL::to_double(p.y()) - CGAL::to_double(q.y());
-      if(dx * dx + dy * dy > longest) {
-        longest = dx * dx + dy * dy;
+      // Halves and hypot: no overflow near 1e308, no underflow to 0 near the smallest
+      // normal double (only the amount carved depends on it).
+      const double length = std::hypot(CGAL::to_double(p.x()) / 2 - CGAL::to_double(q.x()) / 2,
+                                       CGAL::to_double(p.y()) / 2 - CGAL::to_double(q.y()) / 2);
+      if(length > longest) {
+        longest = length;
         crossing = i;
       }
     }
@@ -409,6 +412,9 @@ Statistics delaunay_from_prediction(const PointRange& points, const FaceRange& f
     stats.fell_back = true;
     stats.faces_certified = 0;
     stats.points_reinserted = 0;
+    // The rebuild counts every duplicate again: those the local repair merged before it gave
+    // up are not in the fresh triangulation's count yet.
+    stats.duplicate_points = 0;
     result.tds().clear(); // release the partial import before building anew
     const std::vector<std::uint32_t> grid_order = std::move(imported.points_in_grid_order);
     imported = internal::Imported_prediction<DT>();
@@ -473,13 +479,7 @@ Statistics delaunay_from_prediction(const PointRange& points, const FaceRange& f
     stats.carve_rounds = (std::max)(stats.carve_rounds, repair->rounds());
     if(why != nullptr)
       return build_from_scratch(why);
-#ifdef DFP_DEBUG
-    debug_check(result, "after import");
-#endif
     repair->commit(stack);
-#ifdef DFP_DEBUG
-    debug_check(result, "after commit");
-#endif
     if(!repair->finish_hull(stack, stats.flips))
       return build_from_scratch("the kept faces and the filled holes do not form a triangulation");
     std::size_t duplicates = 0;

@@ -47,6 +47,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
+#include <limits>
 #include <memory>
 #include <type_traits>
 #include <utility>
@@ -148,10 +149,11 @@ void reinsert_vertex_objects(Triangulation& tr, const std::vector<typename Trian
   sort_along_grid(order, [&](std::size_t k) -> const Point& { return vertices[k]->point(); }, false);
   Face_handle hint = tr.infinite_vertex()->face();
   const Point* previous = nullptr; // the point inserted last, at `hint`
-  auto squared_distance = [](const Point& a, const Point& b) {
-    const double dx = CGAL::to_double(a.x()) - CGAL::to_double(b.x());
-    const double dy = CGAL::to_double(a.y()) - CGAL::to_double(b.y());
-    return dx * dx + dy * dy;
+  // Only to choose where a walk starts. Halves and hypot: no overflow near 1e308, no
+  // underflow to 0 near the smallest normal double.
+  auto distance = [](const Point& a, const Point& b) {
+    return std::hypot(CGAL::to_double(a.x()) / 2 - CGAL::to_double(b.x()) / 2,
+                      CGAL::to_double(a.y()) / 2 - CGAL::to_double(b.y()) / 2);
   };
   for(const std::size_t k : order) {
     const Vertex_handle v = vertices[k];
@@ -163,7 +165,7 @@ void reinsert_vertex_objects(Triangulation& tr, const std::vector<typename Trian
     // of the points of 1e6 relabelled, walks from those neighbours took a third of the call.
     if(near != nullptr && (*near)[k] != Vertex_handle() && (*near)[k]->face() != Face_handle() &&
        (previous == nullptr ||
-        squared_distance((*near)[k]->point(), v->point()) < squared_distance(*previous, v->point())))
+        distance((*near)[k]->point(), v->point()) < distance(*previous, v->point())))
       hint = (*near)[k]->face();
     const Face_handle loc = base.locate(v->point(), lt, li, hint);
     if(lt == Base::VERTEX) {
@@ -404,6 +406,9 @@ public:
         open_[k].first->vertex(ccw(open_[k].second))->set_face(open_[k].first);
 
     // Ears. Polygon edges pair with their open half-edge, diagonals with each other.
+    // `linked` marks the open half-edges that get a neighbour: all of them, when the plan is
+    // complete (every live loop filled, paired, or the outer one).
+    std::vector<char> linked(open_.size(), 0);
     std::vector<std::pair<std::uint64_t, Edge>> diagonals;
     for(const Loop& loop : loops_) {
       if(loop.dead)
@@ -412,6 +417,7 @@ public:
         const Edge& a = open_[loop.halfedges[0]];
         const Edge& b = open_[loop.halfedges[1]];
         tds_.set_adjacency(a.first, a.second, b.first, b.second);
+        linked[loop.halfedges[0]] = linked[loop.halfedges[1]] = 1;
         stack.push_back(a);
         continue;
       }
@@ -424,6 +430,7 @@ public:
           if(ear.open[i] != none) {
             const Edge& e = open_[ear.open[i]];
             tds_.set_adjacency(f, i, e.first, e.second);
+            linked[ear.open[i]] = 1;
           } else {
             diagonals.emplace_back(ear.diagonal[i], Edge(f, i));
           }
@@ -434,6 +441,8 @@ public:
               [](const auto& a, const auto& b) { return a.first < b.first; });
     for(std::size_t k = 0; k + 1 < diagonals.size(); k += 2) {
       CGAL_assertion(diagonals[k].first == diagonals[k + 1].first);
+      if(diagonals[k].first != diagonals[k + 1].first)
+        complete_ = false;
       tds_.set_adjacency(diagonals[k].second.first, diagonals[k].second.second,
                          diagonals[k + 1].second.first, diagonals[k + 1].second.second);
     }
@@ -450,11 +459,15 @@ public:
         created_.push_back(outside[k]);
         created_set_.insert(&*outside[k], 0);
         tds_.set_adjacency(outside[k], 2, e.first, e.second);
+        linked[outer_cycle[k]] = 1;
       }
       for(std::size_t k = 0; k < m; ++k)
         tds_.set_adjacency(outside[k], 1, outside[(k + 1) % m], 0);
       infinite_->set_face(outside[0]);
     }
+    for(std::size_t k = 0; k < open_.size(); ++k)
+      if(alive_[k] && !linked[k])
+        complete_ = false;
     committed_ = true;
   }
 
@@ -462,6 +475,10 @@ public:
   // result is a triangulation (see the argument at the top of this file).
   bool finish_hull(std::vector<Edge>& stack, std::size_t& flips)
   {
+    // An open half-edge left without a neighbour (a loop the plan neither filled nor carved)
+    // leaves a fan open: no walk around its vertices may start, and no triangulation is there.
+    if(!complete_)
+      return false;
     if(hull_is_convex_and_wound_once(tr_))
       return true;
     std::vector<const void*> made;
@@ -757,7 +774,8 @@ private:
         }
         const Comparison_result c = compare_xy(tail_point(loop.halfedges[loop.lowest]),
                                                tail_point(loops_[outer_].halfedges[loops_[outer_].lowest]));
-        if(c == SMALLER || (c == EQUAL && area(loop.halfedges) > area(loops_[outer_].halfedges)))
+        if(c == SMALLER ||
+           (c == EQUAL && encloses_more(loop.halfedges, loops_[outer_].halfedges, tail_point(loop.halfedges[loop.lowest]))))
           outer_ = l;
       }
       if(outer_ == none)
@@ -800,11 +818,17 @@ private:
       ymax = (std::max)(ymax, CGAL::to_double(q->y()));
     }
     const std::size_t side = (std::max)(std::size_t(1), std::size_t(std::sqrt(double(m))));
-    const double margin = 1e-9 * ((xmax - xmin) + (ymax - ymin)) + 1e-300;
-    const double sx = xmax > xmin ? double(side) / (xmax - xmin) : 0, sy = ymax > ymin ? double(side) / (ymax - ymin) : 0;
-    auto cell = [&](double v, double lo, double scale) {
-      const double c = (v - lo) * scale;
-      return c <= 0 ? std::size_t(0) : (std::min)(side - 1, std::size_t(c));
+    // Boxes widened by far more than the rounding of to_double (relative to the coordinates,
+    // plus the smallest subnormal); cells as the fraction (v - lo) / (hi - lo) of halves, which
+    // neither overflows (coordinates near +-1e308) nor makes a scale overflow (boxes near the
+    // smallest normal double). Only which pairs are tested depends on this: a pair that meets
+    // shares a cell, the tests are exact.
+    const double largest = (std::max)((std::max)(std::fabs(xmin), std::fabs(xmax)), (std::max)(std::fabs(ymin), std::fabs(ymax)));
+    const double margin = 1e-9 * (xmax / 2 - xmin / 2 + ymax / 2 - ymin / 2) + 1e-15 * largest +
+                          std::numeric_limits<double>::denorm_min();
+    auto cell = [&](double v, double lo, double hi) {
+      const double c = (v / 2 - lo / 2) / (hi / 2 - lo / 2) * double(side);
+      return !(c > 0) ? std::size_t(0) : !(c < double(side - 1)) ? side - 1 : std::size_t(c);
     };
     std::vector<std::vector<std::size_t>> grid(side * side);
     for(std::size_t k = 0; k < m; ++k) {
@@ -814,8 +838,8 @@ private:
       const double x1 = (std::max)(CGAL::to_double(a.x()), CGAL::to_double(b.x())) + margin;
       const double y0 = (std::min)(CGAL::to_double(a.y()), CGAL::to_double(b.y())) - margin;
       const double y1 = (std::max)(CGAL::to_double(a.y()), CGAL::to_double(b.y())) + margin;
-      for(std::size_t cx = cell(x0, xmin, sx); cx <= cell(x1, xmin, sx); ++cx)
-        for(std::size_t cy = cell(y0, ymin, sy); cy <= cell(y1, ymin, sy); ++cy)
+      for(std::size_t cx = cell(x0, xmin, xmax); cx <= cell(x1, xmin, xmax); ++cx)
+        for(std::size_t cy = cell(y0, ymin, ymax); cy <= cell(y1, ymin, ymax); ++cy)
           grid[cy * side + cx].push_back(k);
     }
     // Closed segments [a, b] and [c, d] meet.
@@ -853,6 +877,10 @@ private:
                   compare_xy(u, shared) != compare_xy(shared, w);
           }
           if(bad) {
+            // The faces on both edges go too: the stars may have been carved already (a vertex
+            // with several fans keeps the others), and the next round must see a change.
+            remove(open_[loop[e]].first);
+            remove(open_[loop[f]].first);
             for(const std::size_t k : {e, (e + 1) % m, f, (f + 1) % m})
               carve_star(tail_vertex(loop[k]));
             found = true;
@@ -861,16 +889,35 @@ private:
     return found;
   }
 
-  // Twice the signed area of a loop, in double (only to tell an island from the outer loop).
-  double area(const std::vector<std::size_t>& loop) const
+  // Whether loop `a` encloses a larger area than loop `b`, both through the point `o`, in
+  // double (only to tell an island from the outer loop). The coordinates are taken relative
+  // to `o` (halves: no overflow) and scaled by a power of two that brings the largest to
+  // about 1, so that the cross products neither overflow (coordinates near 1e154 and beyond)
+  // nor vanish (near the smallest normal double).
+  bool encloses_more(const std::vector<std::size_t>& a, const std::vector<std::size_t>& b, const Point& o) const
   {
-    double sum = 0;
-    for(std::size_t k = 0; k < loop.size(); ++k) {
-      const Point& p = tail_point(loop[k]);
-      const Point& q = tail_point(loop[(k + 1) % loop.size()]);
-      sum += CGAL::to_double(p.x()) * CGAL::to_double(q.y()) - CGAL::to_double(q.x()) * CGAL::to_double(p.y());
-    }
-    return sum;
+    const double ox = CGAL::to_double(o.x()) / 2, oy = CGAL::to_double(o.y()) / 2;
+    double largest = 0;
+    for(const std::vector<std::size_t>* loop : {&a, &b})
+      for(const std::size_t h : *loop) {
+        const Point& p = tail_point(h);
+        largest = (std::max)({largest, std::fabs(CGAL::to_double(p.x()) / 2 - ox),
+                              std::fabs(CGAL::to_double(p.y()) / 2 - oy)});
+      }
+    const int e = largest > 0 && std::isfinite(largest) ? -std::ilogb(largest) : 0;
+    const double u = std::ldexp(1.0, e / 2), v = std::ldexp(1.0, e - e / 2);
+    auto area = [&](const std::vector<std::size_t>& loop) {
+      double sum = 0;
+      for(std::size_t k = 0; k < loop.size(); ++k) {
+        const Point& p = tail_point(loop[k]);
+        const Point& q = tail_point(loop[(k + 1) % loop.size()]);
+        const double px = (CGAL::to_double(p.x()) / 2 - ox) * u * v, py = (CGAL::to_double(p.y()) / 2 - oy) * u * v;
+        const double qx = (CGAL::to_double(q.x()) / 2 - ox) * u * v, qy = (CGAL::to_double(q.y()) / 2 - oy) * u * v;
+        sum += px * qy - qx * py;
+      }
+      return sum;
+    };
+    return area(a) > area(b);
   }
 
   std::size_t lowest(const std::vector<std::size_t>& loop) const
@@ -1094,7 +1141,7 @@ private:
   Tds& tds_;
   const Vertex_handle infinite_;
   const bool keep_undo_log_;
-  bool outer_open_ = false, committed_ = false, may_have_several_fans_ = false;
+  bool outer_open_ = false, committed_ = false, may_have_several_fans_ = false, complete_ = true;
   std::size_t rounds_ = 0, removed_finite_ = 0, diagonal_base_ = 0, outer_ = none, groups_ = 0, traced_ = 0;
 
   Address_table<std::size_t> removed_;   // carved face -> position in removed_list_

@@ -480,6 +480,14 @@ private:
     // that the count below would cost more than it can save.
     const double extent = (std::max)(best[0] + best[4], best[2] + best[6]); // width or height
     const double margin = 1e-9 * extent * extent;
+    // The margin must dominate the rounding of the cross products: where it or an extreme
+    // overflows (coordinates near 1e154 and beyond) or underflows (near the smallest normal
+    // double), no conclusion; this test only spares the import, never decides the result.
+    for(const double b : best)
+      if(!std::isfinite(b))
+        return false;
+    if(!(margin >= (std::numeric_limits<double>::min)() && margin <= (std::numeric_limits<double>::max)()))
+      return false;
     const std::size_t max_hull = 2 * V - 2 - F - limit; // h above this: no conclusion
     const std::size_t max_candidates = 16 * std::size_t(std::sqrt(double(n))) + 1024;
     std::vector<Point> candidates;
