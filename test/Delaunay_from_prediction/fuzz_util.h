@@ -140,7 +140,7 @@ inline std::string as_cpp(const Case& c)
     out << "};\n";
   }
   if(!c.part.empty()) {
-    out << "std::vector<int> in_first = {";
+    out << "std::vector<int> part = {"; // 0: in the first part (is_in_first true)
     for(std::size_t i = 0; i < c.part.size(); ++i)
       out << (i ? ", " : "") << c.part[i];
     out << "};\n";

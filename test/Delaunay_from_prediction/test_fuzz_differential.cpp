@@ -764,6 +764,15 @@ void run_dfp(Checker& ck, const Case& c, bool exact)
     faces_in = (long long)DFP::internal::graph_triangles(n, e).size();
   }
   check_stats(ck, s, faces_in, (long long)n, (long long)tr.number_of_vertices());
+  // CGAL's own faces as the prediction: certified as they are, whatever the scale (no fallback).
+  if(exact && ck.failure.empty() && c.entry == E_DFP && c.pred_family == F_EXACT && c.max_flips < 0 &&
+     (c.strategy < 0 || c.strategy == int(DFP::Strategy::automatic) || c.strategy == int(DFP::Strategy::flips) ||
+      c.strategy == int(DFP::Strategy::carve)) &&
+     (s.fell_back || s.faces_certified != s.faces_in || s.flips != 0))
+    ck.fail("certify:exact_prediction_not_certified",
+            std::to_string(s.faces_certified) + " of " + std::to_string(s.faces_in) + " certified, " +
+                std::to_string(s.flips) + " flips, fell_back " + std::to_string(s.fell_back) + " (" +
+                (s.fallback_reason ? s.fallback_reason : "") + ")");
   if(exact && ck.failure.empty() && c.entry == E_DFP && c.output == O_INFO) {
     dfp_test::Faces f;
     for(const Tri& t : c.faces)
@@ -1204,6 +1213,8 @@ static std::string repro_command(long long k)
     s << " --family " << entry_names[opt.family];
   if(opt.kernel >= 0)
     s << " --kernel " << kernel_names[opt.kernel];
+  if(opt.max_n != std::size_t(-1))
+    s << " --max-n " << opt.max_n;
   return s.str();
 }
 
