@@ -765,7 +765,7 @@ void run_dfp(Checker& ck, const Case& c, bool exact)
   }
   check_stats(ck, s, faces_in, (long long)n, (long long)tr.number_of_vertices());
   // CGAL's own faces as the prediction: certified as they are, whatever the scale (no fallback).
-  if(exact && ck.failure.empty() && c.entry == E_DFP && c.pred_family == F_EXACT && c.max_flips < 0 &&
+  if(exact && ck.failure.empty() && c.entry == E_DFP && c.pred_family == F_EXACT && !c.faces.empty() && c.max_flips < 0 &&
      (c.strategy < 0 || c.strategy == int(DFP::Strategy::automatic) || c.strategy == int(DFP::Strategy::flips) ||
       c.strategy == int(DFP::Strategy::carve)) &&
      (s.fell_back || s.faces_certified != s.faces_in || s.flips != 0))
