@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
-# Builds the tests and the examples with AddressSanitizer and UndefinedBehaviorSanitizer
-# (in build-sanitize/ at the repository root; examples optional, benchmarks left out) and runs them with ctest.
+# Builds the tests (the examples too with DFP_SANITIZE_EXAMPLES=ON; never the benchmarks) with
+# AddressSanitizer and UndefinedBehaviorSanitizer in build-sanitize/ at the repository root,
+# and runs them with ctest.
 # Exits non-zero on any sanitizer finding: UBSan is built without recovery and halts on
 # error, ASan aborts on the first error, LeakSanitizer fails the program at exit.
 # Usage: scripts/sanitize.sh   (from any directory)
