@@ -83,8 +83,8 @@ void untangle_by_flips(Triangulation& tr, std::vector<typename Triangulation::Fa
 #if defined(__GNUC__)
     if(k + 8 < bad.size()) // the faces are far apart: fetch the neighbourhood of one ahead
       for(int i = 0; i < 3; ++i) {
-        __builtin_prefetch(&*bad[k + 8]->vertex(i));
-        __builtin_prefetch(&*bad[k + 8]->neighbor(i));
+        __builtin_prefetch(bad[k + 8]->vertex(i).operator->());
+        __builtin_prefetch(bad[k + 8]->neighbor(i).operator->());
       }
 #endif
     if(is_ccw(f))
@@ -332,7 +332,7 @@ public:
         if(k + 8 < pending_.size())
           __builtin_prefetch(&*pending_[k + 8]);
         if(k + 4 < pending_.size() && pending_[k + 4]->face() != Face_handle())
-          __builtin_prefetch(&*pending_[k + 4]->face());
+          __builtin_prefetch(pending_[k + 4]->face().operator->());
 #endif
         carve_faces_around(pending_[k]);
       }
@@ -647,7 +647,7 @@ private:
 #if defined(__GNUC__)
       if(k + 8 < traced_)
         for(int i = 0; i < 3; ++i)
-          __builtin_prefetch(&*removed_list_[k + 8]->neighbor(i));
+          __builtin_prefetch(removed_list_[k + 8]->neighbor(i).operator->());
 #endif
       for(int i = 0; i < 3; ++i) {
         if(loops_may_change)

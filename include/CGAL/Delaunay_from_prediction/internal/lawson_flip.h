@@ -107,7 +107,7 @@ bool flip_edges_while(Triangulation& tr,
   // once.
   auto prefetch_across = [](const std::pair<Face_handle, int>& e) {
 #if defined(__GNUC__)
-    __builtin_prefetch(&*e.first->neighbor(e.second));
+    __builtin_prefetch(e.first->neighbor(e.second).operator->());
 #else
     (void)e;
 #endif
@@ -116,7 +116,7 @@ bool flip_edges_while(Triangulation& tr,
 #if defined(__GNUC__)
     const Face_handle g = e.first->neighbor(e.second);
     for(int k = 0; k < 3; ++k)
-      __builtin_prefetch(&*g->vertex(k));
+      __builtin_prefetch(g->vertex(k).operator->());
 #else
     (void)e;
 #endif

@@ -124,8 +124,8 @@ const char* certify_triangulation(
     if(ahead != tr.finite_faces_end()) {
 #if defined(__GNUC__)
       for(int k = 0; k < 3; ++k) {
-        __builtin_prefetch(&*ahead->vertex(k));
-        __builtin_prefetch(&*ahead->neighbor(k));
+        __builtin_prefetch(ahead->vertex(k).operator->());
+        __builtin_prefetch(ahead->neighbor(k).operator->());
       }
 #endif
       ++ahead;
