@@ -9,7 +9,8 @@
 #              compiles these CGAL-heavy files 2 to 3 times faster than at -O1, and the
 #              tests still run in seconds), DFP_SANITIZE_EXAMPLES=ON (build and run the
 #              examples too; off by default to keep CI short), DFP_SANITIZE_TIMEOUT (per
-#              test, seconds; default 900).
+#              test, seconds; default 900), DFP_FUZZ_CASES (cases of the differential fuzzer;
+#              default 500).
 set -euo pipefail
 
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
@@ -30,6 +31,10 @@ supp="$PWD/scripts/sanitizers"
 export ASAN_OPTIONS="detect_leaks=1:abort_on_error=1:strict_string_checks=1:detect_stack_use_after_return=1:check_initialization_order=1:strict_init_order=1${ASAN_OPTIONS:+:$ASAN_OPTIONS}"
 export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1:suppressions=$supp/ubsan.supp${UBSAN_OPTIONS:+:$UBSAN_OPTIONS}"
 export LSAN_OPTIONS="suppressions=$supp/lsan.supp:print_suppressions=0${LSAN_OPTIONS:+:$LSAN_OPTIONS}"
+
+# The fuzzer's fixed set of cases, shortened: unoptimized and instrumented code runs about ten
+# times slower.
+export DFP_FUZZ_CASES="${DFP_FUZZ_CASES:-500}"
 
 cd build-sanitize
 ctest --output-on-failure -j2 --timeout "${DFP_SANITIZE_TIMEOUT:-900}"

@@ -111,7 +111,8 @@ is not met: ear clipping is quadratic in the size of a hole, and Lawson's flips 
 \tparam EdgeRange a range whose elements `e` give two integer indices into `points`, as
         `e[0]`, `e[1]` or as `e.first`, `e.second` (for example `std::pair<int, int>`).
 \tparam DT a `CGAL::Delaunay_triangulation_2<Gt, Tds>`; vertex `info()`, if assignable from
-        `std::size_t`, receives the point index as in `delaunay_from_prediction()`.
+        `std::size_t`, receives the point index as in `delaunay_from_prediction()`. A
+        `CGAL::Triangulation_hierarchy_2` of one is kept as in `delaunay_from_prediction()`.
 \tparam NamedParameters a sequence of named parameters, passed on to
         `delaunay_from_prediction()`.
 

@@ -320,7 +320,9 @@ for that to pay off is rebuilt from scratch (`Statistics::fell_back`).
         into `points` (for example `std::array<int, 3>` or `std::vector<std::size_t>`).
 \tparam DT a `CGAL::Delaunay_triangulation_2<Gt, Tds>`. If its vertices have an `info()`
         assignable from `std::size_t`, every vertex's `info()` is set to the index of its point
-        (for duplicate points, the smallest of their indices).
+        (for duplicate points, the smallest of their indices). A `CGAL::Triangulation_hierarchy_2`
+        of one is kept as \cgal keeps it: the package fills its level 0, then samples the upper
+        levels anew, as the hierarchy's own insertion samples them.
 \tparam NamedParameters a sequence of named parameters.
 
 \param points the points.
@@ -578,7 +580,8 @@ much carving, too many flips), or when moves change the dimension, its faces are
 the same vertex objects (`Statistics::fell_back`).
 
 \tparam Triangulation a `CGAL::Triangulation_2<Gt, Tds>` or `CGAL::Delaunay_triangulation_2<Gt, Tds>`,
-        for any triangulation data structure.
+        for any triangulation data structure, or a `CGAL::Triangulation_hierarchy_2` of one (its
+        level 0 is repaired in place, then its upper levels are sampled anew at the moved points).
 \tparam NamedParameters a sequence of named parameters.
 
 \param tr the triangulation.

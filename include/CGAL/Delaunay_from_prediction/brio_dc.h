@@ -429,7 +429,8 @@ points (co-circular ties broken by \cgal's symbolic perturbation).
 \tparam PointRange a random-access range of `DT::Point`.
 \tparam DT a `CGAL::Delaunay_triangulation_2<Gt, Tds>`. If its vertices have an `info()`
         assignable from `std::size_t`, every vertex's `info()` is set to the index of its point
-        (for duplicate points, the smallest of their indices).
+        (for duplicate points, the smallest of their indices). A `CGAL::Triangulation_hierarchy_2`
+        of one is kept as in `delaunay_from_prediction()`.
 \tparam NamedParameters a sequence of named parameters.
 
 \param points the points.

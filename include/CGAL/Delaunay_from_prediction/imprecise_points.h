@@ -197,7 +197,8 @@ public:
   \tparam PointRange a random-access range of `Point`, `size()` of them.
   \tparam DT a `CGAL::Delaunay_triangulation_2<Gt, Tds>`. If its vertices have an `info()`
           assignable from `std::size_t`, every vertex's `info()` is set to the index of its disk
-          (for points at equal positions, the smallest of their indices).
+          (for points at equal positions, the smallest of their indices). A
+          `CGAL::Triangulation_hierarchy_2` of one is kept as in `delaunay_from_prediction()`.
   \tparam NamedParameters a sequence of named parameters (none is used yet).
   \param instance the points.
   \param dt receives the result; cleared first.

@@ -79,7 +79,8 @@ points (co-circular ties broken by CGAL's symbolic perturbation), whatever the g
         integer indices into `points`, or anything with `operator[](0..1)` returning one.
 \tparam DT a `CGAL::Delaunay_triangulation_2<Gt, Tds>`. If its vertices have an `info()`
         assignable from `std::size_t`, every vertex's `info()` is set to the index of its point
-        (for duplicate points, the smallest of their indices).
+        (for duplicate points, the smallest of their indices). A `CGAL::Triangulation_hierarchy_2`
+        of one is kept as in `delaunay_from_prediction()`.
 \tparam NamedParameters a sequence of named parameters (none is used yet).
 
 \param points the points.

@@ -245,7 +245,8 @@ the paper's bound is not proven for it), which measured slower (see the user man
 \tparam IsInFirst a function object taking a `DT::Vertex_handle` and returning a `bool`.
 \tparam DT1, DT2 `CGAL::Delaunay_triangulation_2<Gt, Tds1>` and `<Gt, Tds2>`, with the points of
         `DT`. When the vertices of `DT` and of `DT1` (`DT2`) both have an `info()` and the first
-        is assignable to the second, it is copied.
+        is assignable to the second, it is copied. Each of `DT`, `DT1`, `DT2` may be a
+        `CGAL::Triangulation_hierarchy_2`; the outputs are kept as in `delaunay_from_prediction()`.
 \tparam NamedParameters a sequence of named parameters.
 
 \param dt the input triangulation; not modified.
