@@ -565,8 +565,13 @@ Statistics brio_dc_delaunay(const PointRange& points, DT& dt, const NamedParamet
           members.push_back(level.members[k]);
       }
       levels.push_back(std::move(level));
+      // A sample that barely shrinks (sample_probability near 1, whose graph has few
+      // components: equal points, a geometric progression) would make one level per point or
+      // so, quadratic time: it is the last sample instead.
+      if(members.size() > m - m / 32)
+        break;
     }
-    // The last sample, small: inserted first, by CGAL's insertion.
+    // The last sample, small (or one that did not shrink): inserted first, by CGAL's insertion.
     stats.insertion_rounds = levels.size() + 1;
     Face_handle hint;
     for(std::uint32_t i : members) {
