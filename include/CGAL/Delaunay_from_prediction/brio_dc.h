@@ -403,6 +403,9 @@ none of them is sampled, \f$2^{-s}\f$; with \f$q\f$ it is at most \f$\max(1 - q,
 matched point is kept with probability 1/2), which keeps the sum over triangles linear for
 any fixed \f$q > 0\f$, with a constant that grows as \f$q\f$ shrinks. That adaptation is ours,
 not the paper's.
+A sample that keeps more than 31/32 of the points of its level (\f$q\f$ near 1 on points whose
+graph has few components: equal points, a geometric progression) is the last one, inserted by
+\cgal's insertion: else the samples would number about one per point.
 
 The nearest-neighbour graphs are computed with a uniform grid of about two points a cell,
 crowded cells refined by grids of their own down to 6 levels (not \cgal's spatial searching,
@@ -566,8 +569,13 @@ Statistics brio_dc_delaunay(const PointRange& points, DT& dt, const NamedParamet
           members.push_back(level.members[k]);
       }
       levels.push_back(std::move(level));
+      // A sample that barely shrinks (sample_probability near 1, whose graph has few
+      // components: equal points, a geometric progression) would make one level per point or
+      // so, quadratic time: it is the last sample instead.
+      if(members.size() > m - m / 32)
+        break;
     }
-    // The last sample, small: inserted first, by CGAL's insertion.
+    // The last sample, small (or one that did not shrink): inserted first, by CGAL's insertion.
     stats.insertion_rounds = levels.size() + 1;
     Face_handle hint;
     for(std::uint32_t i : members) {
