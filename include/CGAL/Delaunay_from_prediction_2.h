@@ -471,10 +471,11 @@ Statistics delaunay_from_prediction(const PointRange& points, const FaceRange& f
     // the hull (carve_repair.h); vertices left without a face are reinserted.
     repair.reset(new internal::Carve_repair<DT>(result, false));
     repair->expect_outer_cycle();
-    if(imported.faces_dropped > 0) { // faces overlapped: some may still overlap unseen
-      repair->expect_several_fans();
+    // Faces that overlap without sharing an edge on one side (none left out) still meet at a
+    // vertex in several fans: a vertex of a carved star may keep a closed fan elsewhere.
+    repair->expect_several_fans();
+    if(imported.faces_dropped > 0) // faces overlapped: some may still overlap unseen
       internal::carve_vertices_wound_twice(result, *repair);
-    }
     for(const auto& e : imported.open_halfedges)
       repair->add_open_halfedge(e.first, e.second);
     const char* why = repair->plan(internal::default_carve_limits(n));

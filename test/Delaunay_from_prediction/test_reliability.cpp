@@ -7,6 +7,8 @@
 // the statistics checked for consistency:
 //  - small random triple sets that are no triangulation (overlapping, repeated, crossing
 //    faces): the local repair must finish or fall back, never crash;
+//  - CGAL's faces with foreign indices (faces overlapping without a shared edge): the result
+//    is CGAL's, no vertex lost;
 //  - duplicate points on every path (certified, flips, local repair, fallback) and with every
 //    strategy: Statistics::duplicate_points == n - number_of_vertices();
 //  - extreme scales (2^-1022 to 1e300) and offsets: a perfect prediction is certified, and
@@ -249,6 +251,56 @@ void random_triples_case(std::uint64_t seed, std::size_t ratio, const std::vecto
   Scope scope("seed ", seed, " ratio ", ratio, " n=", n, " faces ", faces_text(faces));
   for(const Mode mode : modes)
     check_call<K>(points, faces, mode);
+}
+
+// Faces with foreign indices (CGAL's faces, some indices replaced by others): faces that
+// overlap without sharing an edge on one side, so none is left out. A vertex whose star the
+// repair carved could keep a closed fan elsewhere; it was reinserted, found at its own point
+// and deleted while faces still held it (an invalid result, a vertex lost, no error).
+void reported_foreign_faces()
+{
+  using K = Epick;
+  const std::vector<K::Point_2> points = {
+      {0.79644175432622433, 0.89056099578738213},  {0.30844233091920614, 0.77470617461949587},
+      {-0.50509706605225801, -0.0073479516431689262}, {0.84376198705285788, 0.21357206907123327},
+      {0.41964411456137896, 0.14979219902306795},  {0.19414869323372841, -0.93245556391775608},
+      {0.17292705550789833, 0.73846207093447447},  {0.092436929233372211, -0.58789500687271357},
+      {0.23915303219109774, 0.9888373427093029},   {0.039238587953150272, -0.064559303224086761},
+      {0.55505823064595461, -0.5686771422624588}};
+  const Faces faces = {{2, 5, 7}, {5, 1, 7}, {1, 0, 8}, {9, 2, 7}, {10, 9, 7},
+                       {6, 1, 8}, {0, 1, 3}, {1, 4, 3}, {1, 6, 4}};
+  for(const Mode m : all_modes)
+    check_call<K>(points, faces, m);
+  CGAL::Delaunay_triangulation_2<K> dt; // plain DT (no info), as reported
+  DFP::delaunay_from_prediction(points, faces, dt);
+  check_is_cgal_delaunay(dt, points);
+}
+
+// The class: CGAL's faces with a fifth of the indices replaced, over 5 to 40 uniform or
+// clustered points.
+template <class K>
+void foreign_faces_class(std::uint64_t seed, std::size_t cases, const std::vector<Mode>& modes)
+{
+  Random rng{seed};
+  for(std::size_t c = 0; c < cases; ++c) {
+    const std::size_t n = 5 + rng.below(36);
+    XYs xy(n);
+    const bool clustered = rng.below(3) == 0;
+    for(XY& p : xy)
+      p = clustered ? XY{double(rng.below(3)) + 0.01 * rng.uniform(), double(rng.below(2)) + 0.01 * rng.uniform()}
+                    : XY{rng.uniform(), rng.uniform()};
+    const auto points = from_xy<K>(xy);
+    Faces faces = delaunay_faces<K>(points);
+    for(Face& f : faces)
+      if(rng.below(5) == 0) {
+        const std::size_t j = rng.below(n), at = rng.below(3);
+        if(j != f[(at + 1) % 3] && j != f[(at + 2) % 3])
+          f[at] = j;
+      }
+    Scope scope("seed ", seed, " case ", c, " n=", n, " faces ", faces_text(faces));
+    for(const Mode m : modes)
+      check_call<K>(points, faces, m);
+  }
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -524,6 +576,11 @@ int main(int argc, char** argv)
     for(std::uint64_t seed = 0; seed < 3000; ++seed)
       random_triples_case<Epick>(seed, 1 + seed % 4, {Mode::defaults});
   });
+  run("reported foreign faces", reported_foreign_faces);
+  run("foreign faces, Epick", [] {
+    foreign_faces_class<Epick>(4, 3000, {Mode::defaults, Mode::t_division});
+  });
+  run("foreign faces, Epeck", [] { foreign_faces_class<Epeck>(5, 200, {Mode::defaults}); });
   run("reported duplicate count", reported_duplicate_count);
   run("duplicates, Epick", [] { duplicates_class<Epick>(3, 300); });
   run("scales", scales);

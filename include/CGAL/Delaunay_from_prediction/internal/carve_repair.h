@@ -313,8 +313,8 @@ public:
   // The importer's TDS has no infinite faces yet: the outer boundary is a cycle to close.
   void expect_outer_cycle() { outer_open_ = true; }
 
-  // The faces may meet at a vertex in several fans (the importer, after it left out faces on
-  // the same side of an edge as others): checked by one pass at commit().
+  // The faces may meet at a vertex in several fans (the importer: overlapping faces, left
+  // out or not): checked by one pass at commit().
   void expect_several_fans() { may_have_several_fans_ = true; }
 
   // Carves, traces the holes, and widens the holes that cannot be filled, round after round.
