@@ -360,33 +360,6 @@ std::vector<Shape> shapes()
   return s;
 }
 
-// Runs `body` in a child process, where a crash (the reported failure was a SIGSEGV) cannot
-// take the other cases down; its failed checks print there and count as one failure here.
-template <class F>
-void isolated(const char* what, const F& body)
-{
-#if defined(__unix__) || defined(__APPLE__)
-  std::cout.flush();
-  std::cerr.flush();
-  const pid_t child = fork();
-  if(child == 0) {
-    const int before = failures();
-    DFP_RUN(body());
-    std::cerr.flush();
-    std::_Exit(failures() == before ? 0 : 3);
-  }
-  if(child > 0) {
-    int status = 0;
-    waitpid(child, &status, 0);
-    DFP_CHECK_MSG(WIFEXITED(status) && WEXITSTATUS(status) == 0,
-                  what << (WIFSIGNALED(status) ? ": crashed (signal " : ": failed (status ")
-                       << (WIFSIGNALED(status) ? WTERMSIG(status) : WEXITSTATUS(status)) << ")");
-    return;
-  }
-#endif
-  DFP_RUN(body());
-}
-
 // With an argument, only the cases whose name contains it run.
 std::string only;
 

@@ -184,43 +184,6 @@ bool verbose() { return std::getenv("DFP_TEST_VERBOSE") != nullptr; }
 // Isolation: each group runs in a child process with a time limit.
 // ---------------------------------------------------------------------------------------------
 
-template <class F>
-void isolated(const std::string& what, const F& body, unsigned seconds = 120)
-{
-#if defined(__unix__) || defined(__APPLE__)
-  std::cout.flush();
-  std::cerr.flush();
-  const pid_t child = fork();
-  if(child == 0) {
-    alarm(seconds); // an endless loop is killed by SIGALRM
-    const int before = failures();
-    {
-      Scope scope(what);
-      DFP_RUN(body());
-    }
-    std::cout.flush();
-    std::cerr.flush();
-    std::_Exit(std::min(failures() - before, 100));
-  }
-  if(child > 0) {
-    int status = 0;
-    waitpid(child, &status, 0);
-    if(WIFEXITED(status)) {
-      failures() += WEXITSTATUS(status); // the child printed them
-    } else {
-      Scope scope(what);
-      report_failure(__FILE__, __LINE__, "the group ran to its end",
-                     WIFSIGNALED(status) ? (WTERMSIG(status) == SIGALRM
-                                                ? std::string("timed out after ") + std::to_string(seconds) + " s"
-                                                : "crashed with signal " + std::to_string(WTERMSIG(status)))
-                                         : std::string("stopped abnormally"));
-    }
-    return;
-  }
-#endif
-  Scope scope(what);
-  DFP_RUN(body());
-}
 
 // ---------------------------------------------------------------------------------------------
 // Point sets and predictions, drawn with the package's random source

@@ -41,43 +41,6 @@ using Random = DFP::internal::Splitmix64;
 
 namespace {
 
-template <class F>
-void isolated(const std::string& what, const F& body, unsigned seconds = 300)
-{
-#if defined(__unix__) || defined(__APPLE__)
-  std::cout.flush();
-  std::cerr.flush();
-  const pid_t child = fork();
-  if(child == 0) {
-    alarm(seconds); // an endless loop is killed by SIGALRM
-    const int before = failures();
-    {
-      Scope scope(what);
-      DFP_RUN(body());
-    }
-    std::cout.flush();
-    std::cerr.flush();
-    std::_Exit(std::min(failures() - before, 100));
-  }
-  if(child > 0) {
-    int status = 0;
-    waitpid(child, &status, 0);
-    if(WIFEXITED(status)) {
-      failures() += WEXITSTATUS(status); // the child printed them
-    } else {
-      Scope scope(what);
-      report_failure(__FILE__, __LINE__, "the group ran to its end",
-                     WIFSIGNALED(status) ? (WTERMSIG(status) == SIGALRM
-                                                ? std::string("timed out after ") + std::to_string(seconds) + " s"
-                                                : "crashed with signal " + std::to_string(WTERMSIG(status)))
-                                         : std::string("stopped abnormally"));
-    }
-    return;
-  }
-#endif
-  Scope scope(what);
-  DFP_RUN(body());
-}
 
 enum class Mode { defaults, automatic, carve, t_division, flips, rebuild, spanning_tree, no_flips };
 const Mode all_modes[] = {Mode::defaults, Mode::automatic,     Mode::carve,   Mode::t_division,
@@ -560,7 +523,7 @@ int main(int argc, char** argv)
   const std::string only = argc > 1 ? argv[1] : "";
   auto run = [&](const std::string& name, auto body) {
     if(only.empty() || name.find(only) != std::string::npos)
-      isolated(name, body);
+      isolated(name, body, 300);
   };
   run("reported convexify_hull crash", reported_convexify_crash);
   run("random triples, Epick", [] {
