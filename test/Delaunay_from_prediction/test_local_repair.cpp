@@ -58,40 +58,8 @@ namespace {
 // Strategies
 // ---------------------------------------------------------------------------------------------
 
-enum class Mode { defaults, automatic, carve, t_division, flips, rebuild, spanning_tree };
-const Mode all_modes[] = {Mode::defaults, Mode::automatic, Mode::carve,        Mode::t_division,
-                          Mode::flips,    Mode::rebuild,   Mode::spanning_tree};
-
-const char* name_of(Mode m)
-{
-  switch(m) {
-  case Mode::defaults: return "no parameter";
-  case Mode::automatic: return "automatic";
-  case Mode::carve: return "carve";
-  case Mode::t_division: return "t_division";
-  case Mode::flips: return "flips";
-  case Mode::spanning_tree: return "spanning_tree";
-  default: return "rebuild";
-  }
-}
-
 bool carves(Mode m) { return m == Mode::defaults || m == Mode::automatic || m == Mode::carve; }
 
-// Calls body(np) with the named parameters of the mode.
-template <class F>
-DFP::Statistics with_strategy(Mode m, const F& body)
-{
-  namespace P = DFP::parameters;
-  switch(m) {
-  case Mode::defaults: return body(P::default_values());
-  case Mode::automatic: return body(P::strategy(DFP::Strategy::automatic));
-  case Mode::carve: return body(P::strategy(DFP::Strategy::carve));
-  case Mode::t_division: return body(P::strategy(DFP::Strategy::t_division));
-  case Mode::flips: return body(P::strategy(DFP::Strategy::flips));
-  case Mode::spanning_tree: return body(P::strategy(DFP::Strategy::spanning_tree));
-  default: return body(P::strategy(DFP::Strategy::rebuild));
-  }
-}
 
 std::string describe(const DFP::Statistics& s)
 {
@@ -395,13 +363,13 @@ void dfp_case(const std::string& label, const std::vector<typename DT::Point>& p
   Scope scope(label);
   const std::size_t n = points.size();
   const std::size_t unused = n - used_indices(faces);
-  for(Mode m : all_modes) {
+  for(Mode m : strategy_modes) {
     Scope sm("strategy ", name_of(m));
     DT dt;
     dt.insert(make_point<K>(1e3, 1e3)); // must be cleared
     dt.insert(make_point<K>(-1e3, 1e3));
     dt.insert(make_point<K>(0., -1e3));
-    const DFP::Statistics s = with_strategy(m, [&](const auto& np) {
+    const DFP::Statistics s = with_mode(m, [&](const auto& np) {
       return DFP::delaunay_from_prediction(points, faces, dt, np);
     });
     if(verbose())
@@ -608,7 +576,7 @@ void md_case(const std::string& label, const std::vector<typename Tr::Point>& st
 {
   Scope scope(label);
   const std::size_t n = start.size();
-  for(Mode m : all_modes) {
+  for(Mode m : strategy_modes) {
     Scope sm("strategy ", name_of(m));
     Tr tr;
     Handles<Tr> handles;
@@ -620,7 +588,7 @@ void md_case(const std::string& label, const std::vector<typename Tr::Point>& st
     const std::size_t faces_before = tr.dimension() == 2 ? tr.number_of_faces() : 0;
     if(m == Mode::defaults && expect_inverted)
       DFP_CHECK_MSG(inverted > 0, "the moves inverted no face");
-    const DFP::Statistics s = with_strategy(m, [&](const auto& np) { return DFP::make_delaunay(tr, np); });
+    const DFP::Statistics s = with_mode(m, [&](const auto& np) { return DFP::make_delaunay(tr, np); });
     if(verbose())
       std::cout << where() << ": " << inverted << " inverted: " << describe(s) << std::endl;
     if(!exact) {

@@ -190,6 +190,45 @@ namespace dfp_test {
 
 namespace DFP = CGAL::Delaunay_from_prediction;
 
+// The ways the tests call delaunay_from_prediction(): each Strategy, and max_flips(0).
+enum class Mode { defaults, automatic, carve, t_division, flips, rebuild, spanning_tree, no_flips };
+// Every Strategy, and every Strategy and max_flips(0).
+const Mode strategy_modes[] = {Mode::defaults, Mode::automatic, Mode::carve,        Mode::t_division,
+                               Mode::flips,    Mode::rebuild,   Mode::spanning_tree};
+const Mode all_modes[] = {Mode::defaults, Mode::automatic,     Mode::carve,   Mode::t_division,
+                          Mode::flips,    Mode::rebuild,       Mode::spanning_tree, Mode::no_flips};
+
+inline const char* name_of(Mode m)
+{
+  switch(m) {
+  case Mode::defaults: return "no parameter";
+  case Mode::automatic: return "automatic";
+  case Mode::carve: return "carve";
+  case Mode::t_division: return "t_division";
+  case Mode::flips: return "flips";
+  case Mode::spanning_tree: return "spanning_tree";
+  case Mode::no_flips: return "max_flips(0)";
+  default: return "rebuild";
+  }
+}
+
+// Calls body(np) with the named parameters of the mode.
+template <class F>
+DFP::Statistics with_mode(Mode m, const F& body)
+{
+  namespace P = DFP::parameters;
+  switch(m) {
+  case Mode::defaults: return body(P::default_values());
+  case Mode::automatic: return body(P::strategy(DFP::Strategy::automatic));
+  case Mode::carve: return body(P::strategy(DFP::Strategy::carve));
+  case Mode::t_division: return body(P::strategy(DFP::Strategy::t_division));
+  case Mode::flips: return body(P::strategy(DFP::Strategy::flips));
+  case Mode::spanning_tree: return body(P::strategy(DFP::Strategy::spanning_tree));
+  case Mode::no_flips: return body(P::max_flips(std::size_t(0)));
+  default: return body(P::strategy(DFP::Strategy::rebuild));
+  }
+}
+
 // Runs `body` in a forked child killed after `seconds` (an endless loop is a failure too); its
 // failures are counted here, a crash or a time-out reported as one. Where fork() is not
 // available, runs it here.
