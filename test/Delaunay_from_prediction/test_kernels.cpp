@@ -7,7 +7,7 @@
 // For each kernel: delaunay_from_prediction() with the main predictions and make_delaunay()
 // after small and large moves, compared with CGAL's DT built with the same kernel. Exact
 // kernels also get co-circular inputs; the inexact kernel gets a near-degenerate input on which
-// it must still terminate with a valid triangulation.
+// it must still terminate with a valid triangulation (built by CGAL's insertion: a fallback).
 
 #include <CGAL/Delaunay_from_prediction_2.h> // first: the header is self-contained
 
@@ -29,6 +29,9 @@ struct Kernel_test
   using Points = std::vector<Point>;
 
   CGAL::Random rng{2718};
+  // Inexact predicates (Simple_cartesian<double>): every entry point builds with CGAL's own
+  // insertion (a fallback), so the checks of how the prediction was used do not apply.
+  static constexpr bool exact_predicates = DFP::internal::has_exact_predicates<K>::value;
 
   // delaunay_from_prediction into a pre-filled dt; compares with CGAL if `compare`.
   template <class DT, class NP = DFP::parameters::Default_named_parameters>
@@ -57,15 +60,17 @@ struct Kernel_test
     {
       Scope s("the DT itself");
       const DFP::Statistics st = run<DT>(points, shuffled(dt_faces, rng));
-      DFP_CHECK(!st.fell_back);
-      DFP_CHECK(st.faces_certified == st.faces_in);
-      DFP_CHECK(st.flips == 0);
-      DFP_CHECK(st.edges_tested == 2 * dt_faces.size() + 1 - n);
+      DFP_CHECK(st.fell_back == !exact_predicates);
+      if(exact_predicates) {
+        DFP_CHECK(st.faces_certified == st.faces_in);
+        DFP_CHECK(st.flips == 0);
+        DFP_CHECK(st.edges_tested == 2 * dt_faces.size() + 1 - n);
+      }
     }
     {
       Scope s("the DT reversed");
       const DFP::Statistics st = run<DT>(points, reversed(dt_faces));
-      DFP_CHECK(!st.fell_back && st.flips == 0);
+      DFP_CHECK(!exact_predicates || (!st.fell_back && st.flips == 0));
     }
     {
       Scope s("the DT after random flips");
@@ -74,16 +79,20 @@ struct Kernel_test
       const std::size_t wrong = edges_not_in_delaunay<K>(faces, points);
       const DFP::Statistics st = run<DT>(points, faces);
       DFP_CHECK(done > 0 && wrong > 0);
-      DFP_CHECK_MSG(!st.fell_back, st.fallback_reason);
-      DFP_CHECK_MSG(st.flips >= wrong, st.flips << " vs " << wrong);
-      DFP_CHECK(st.edges_not_locally_delaunay >= 1 && st.edges_not_locally_delaunay <= wrong);
+      if(exact_predicates) {
+        DFP_CHECK_MSG(!st.fell_back, st.fallback_reason);
+        DFP_CHECK_MSG(st.flips >= wrong, st.flips << " vs " << wrong);
+        DFP_CHECK(st.edges_not_locally_delaunay >= 1 && st.edges_not_locally_delaunay <= wrong);
+      }
     }
     {
       Scope s("a plain Triangulation_2, max_flips(100 n)");
       const DFP::Statistics st = run<DT>(points, faces_by_info(indexed_triangulation<K>(points)),
                                          true, DFP::parameters::max_flips(100 * n));
-      DFP_CHECK_MSG(!st.fell_back, st.fallback_reason);
-      DFP_CHECK(st.flips > 0);
+      if(exact_predicates) {
+        DFP_CHECK_MSG(!st.fell_back, st.fallback_reason);
+        DFP_CHECK(st.flips > 0);
+      }
     }
     {
       Scope s("a plain Triangulation_2, default parameters");
@@ -113,8 +122,10 @@ struct Kernel_test
       Scope s("the DT of half the points");
       const DFP::Statistics st =
           run<DT>(points, delaunay_faces<K>(Points(points.begin(), points.begin() + std::ptrdiff_t(n / 2))));
-      DFP_CHECK(!st.fell_back);
-      DFP_CHECK(st.points_unused == n - n / 2);
+      if(exact_predicates) {
+        DFP_CHECK(!st.fell_back);
+        DFP_CHECK(st.points_unused == n - n / 2);
+      }
     }
   }
 
@@ -140,7 +151,7 @@ struct Kernel_test
     };
     step("initial");
     move_keeping_faces_ccw(tr, handles, 0.03 * spacing, rng);
-    DFP_CHECK(step("small moves keeping faces ccw").fell_back == false);
+    DFP_CHECK(step("small moves keeping faces ccw").fell_back == !exact_predicates);
     for(const auto& v : handles)
       v->set_point(make_point<K>(CGAL::to_double(v->point().x()) + rng.get_double(-2., 2.) * spacing,
                                  CGAL::to_double(v->point().y()) + rng.get_double(-2., 2.) * spacing));

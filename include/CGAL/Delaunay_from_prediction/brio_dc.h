@@ -459,6 +459,12 @@ points (co-circular ties broken by \cgal's symbolic perturbation).
 \throws Invalid_prediction if a point has a non-finite coordinate, or there are \f$2^{32} - 1\f$
         points or more; `std::invalid_argument` if `sample_probability` is not in \f$(0, 1]\f$.
         Then `dt` is unchanged.
+
+With traits whose predicates are not exact (neither filtered nor on an exact number type, e.g.
+`Simple_cartesian<double>`), whose walks and flips could cycle or corrupt, the faces are decided
+by exact predicates on the coordinates rounded to double (no rounding for
+`Simple_cartesian<double>`; `Statistics::fell_back`), so that the call terminates with all the
+points, whereas \cgal's own insertion with such traits may lose points or crash.
 */
 template <class PointRange, class DT, class NamedParameters = parameters::Default_named_parameters>
 Statistics brio_dc_delaunay(const PointRange& points, DT& dt, const NamedParameters& np = parameters::default_values())
@@ -489,6 +495,10 @@ Statistics brio_dc_delaunay(const PointRange& points, DT& dt, const NamedParamet
   stats.points_reinserted = n;
   if(n == 0)
     return stats;
+  if constexpr(!internal::has_exact_predicates<typename DT::Geom_traits>::value) {
+    internal::build_with_exact_predicates(dt, point_begin, n, stats); // inexact predicates: decided by exact ones
+    return stats;
+  }
   // The points, gathered (every later pass reads them by index).
   std::vector<Point> point(point_begin, point_begin + std::ptrdiff_t(n));
 

@@ -18,6 +18,7 @@
 #include <CGAL/Delaunay_from_prediction/internal/input_check.h>
 #include <CGAL/Delaunay_from_prediction/internal/point_insertion.h>
 #include <CGAL/Delaunay_from_prediction/internal/random.h>
+#include <CGAL/Delaunay_from_prediction/internal/rebuild.h>
 #include <CGAL/Delaunay_from_prediction/internal/spanning_tree_insertion.h>
 #include <CGAL/Delaunay_from_prediction/internal/spatial_order.h>
 #include <CGAL/Delaunay_from_prediction/internal/vertex_info.h>
@@ -208,6 +209,12 @@ public:
            `duplicate_points`.
   \throws Invalid_prediction if `instance` does not have `size()` points or a point has a
           non-finite coordinate. Then `dt` is unchanged.
+
+  With traits whose predicates are not exact (neither filtered nor on an exact number type,
+  e.g. `Simple_cartesian<double>`), whose walks and flips could cycle or corrupt, the faces
+  are decided by exact predicates on the coordinates rounded to double instead (no rounding for
+  `Simple_cartesian<double>`; `Statistics::fell_back`), so that the call terminates with all the
+  points, whereas \cgal's own insertion with such traits may lose points or crash.
   */
   template <class PointRange, class DT, class NamedParameters = parameters::Default_named_parameters>
   Statistics triangulate(const PointRange& instance, DT& dt,
@@ -234,6 +241,12 @@ public:
     stats.points_reinserted = n;
     if(n == 0)
       return stats;
+    if constexpr(!internal::has_exact_predicates<Gt>::value) {
+      // Inexact predicates (internal/exact_predicates.h): faces decided by exact predicates
+      // (rebuild.h), the walks and flips below relying on consistent predicates.
+      internal::build_with_exact_predicates(dt, points, n, stats);
+      return stats;
+    }
     internal::Vertex_grid<Vertex_handle> grid(n, xmin_, xmax_, ymin_, ymax_);
     const std::size_t cap = internal::walk_cap(n);
     std::vector<Vertex_handle> vertex(n);

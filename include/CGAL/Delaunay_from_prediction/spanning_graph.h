@@ -93,6 +93,12 @@ points (co-circular ties broken by CGAL's symbolic perturbation), whatever the g
          `duplicate_points`, `fell_back`.
 \throws Invalid_prediction if a point has a non-finite coordinate, or an edge has an end out of
         range or joins a point to itself. Then `dt` is unchanged.
+
+With traits whose predicates are not exact (neither filtered nor on an exact number type, e.g.
+`Simple_cartesian<double>`), whose walks and flips could cycle or corrupt, the faces are decided
+by exact predicates on the coordinates rounded to double (no rounding for
+`Simple_cartesian<double>`; `Statistics::fell_back`), so that the call terminates with all the
+points, whereas \cgal's own insertion with such traits may lose points or crash.
 */
 template <class PointRange, class EdgeRange, class DT,
           class NamedParameters = parameters::Default_named_parameters>
@@ -113,7 +119,10 @@ Statistics delaunay_from_spanning_graph(const PointRange& points, const EdgeRang
   const std::vector<std::uint32_t> ends = internal::checked_edge_ends(edges, n);
   stats.edges_in = ends.size() / 2;
   dt.clear();
-  internal::build_along_edges(dt, point_at, n, ends, stats);
+  if constexpr(!internal::has_exact_predicates<typename DT::Geom_traits>::value)
+    internal::build_with_exact_predicates(dt, point_at, n, stats); // inexact predicates: decided by exact ones
+  else
+    internal::build_along_edges(dt, point_at, n, ends, stats);
   return stats;
   } // not a hierarchy
 }

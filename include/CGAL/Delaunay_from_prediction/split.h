@@ -273,6 +273,12 @@ the paper's bound is not proven for it), which measured slower (see the user man
          of the reinsertion walks.
 \throws Invalid_prediction if `dt1` or `dt2` is `dt`, or `dt1` is `dt2`. Then nothing is
         changed. An exception thrown by `is_in_first` leaves `dt1` and `dt2` unchanged too.
+
+With traits whose predicates are not exact (neither filtered nor on an exact number type, e.g.
+`Simple_cartesian<double>`), whose walks and flips could cycle or corrupt, each part is decided
+by exact predicates on the coordinates rounded to double instead (no rounding for
+`Simple_cartesian<double>`; `Statistics::fell_back`), so that the call terminates with all the
+points, whereas \cgal's own insertion with such traits may lose points or crash.
 */
 template <class DT, class IsInFirst, class DT1, class DT2,
           class NamedParameters = parameters::Default_named_parameters>
@@ -319,6 +325,27 @@ Statistics split_delaunay(const DT& dt, IsInFirst is_in_first, DT1& dt1, DT2& dt
   stats.points_reinserted = n;
   dt1.clear();
   dt2.clear();
+  if constexpr(!internal::has_exact_predicates<typename DT::Geom_traits>::value) {
+    // Inexact predicates (internal/exact_predicates.h): each part decided by exact predicates.
+    (void)method;
+    (void)seed;
+    auto insert_part = [&](auto& target, int which) {
+      std::vector<typename DT::Point> points;
+      std::vector<Vertex_handle> from;
+      for(std::size_t k = 0; k < n; ++k)
+        if(part[k] == which) {
+          points.push_back(point[k]);
+          from.push_back(source[k]);
+        }
+      internal::insert_with_exact_predicates(target, points.begin(), points.size(),
+                                 [&](std::size_t j, auto v, bool) { internal::copy_info(from[j], v); });
+    };
+    insert_part(dt1, 0);
+    insert_part(dt2, 1);
+    stats.fell_back = true;
+    stats.fallback_reason = internal::inexact_predicates;
+    return stats;
+  }
   std::vector<typename DT1::Vertex_handle> in_first(method == Split_method::randomized ? n : 0);
   std::vector<typename DT2::Vertex_handle> in_second(method == Split_method::randomized ? n : 0);
   if(method == Split_method::randomized && dt.dimension() == 2 && n < std::size_t(internal::no_rank)) {

@@ -15,11 +15,13 @@
 #define CGAL_DELAUNAY_FROM_PREDICTION_INTERNAL_REBUILD_H
 
 #include <CGAL/Delaunay_from_prediction/Statistics.h>
+#include <CGAL/Delaunay_from_prediction/internal/exact_predicates.h>
 #include <CGAL/Delaunay_from_prediction/internal/point_insertion.h>
 #include <CGAL/Delaunay_from_prediction/internal/spatial_order.h>
 #include <CGAL/Delaunay_from_prediction/internal/vertex_info.h>
 
 #include <CGAL/Delaunay_triangulation_2.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Triangulation_data_structure_2.h>
 #include <CGAL/Triangulation_face_base_with_info_2.h>
 #include <CGAL/Triangulation_vertex_base_with_info_2.h>
@@ -96,59 +98,18 @@ void build_from_scratch(DT& dt, PointIterator points, std::size_t n, Statistics&
   insert_points(dt, points, indices, stats, nullptr, in_order);
 }
 
-// Replaces the faces of `tr` by those of DT(its vertices), keeping every vertex object (so
-// vertex handles and info() survive). The new triangulation is built aside by the package's
-// insertion (insert_by_index()), then transplanted face by face, any dimension included. If two vertices are at
-// the same point, throws Invalid_prediction naming both, before `tr` is modified.
-template <class Triangulation>
-void rebuild_keeping_vertices(Triangulation& tr, Statistics& stats)
+// Copies the faces of the Delaunay triangulation `aside` into the TDS of `tr`, whose faces
+// are dropped: `vertex_of(aside vertex)` gives the vertex of `tr` for each vertex of `aside`
+// (the infinite one included). A face of dimension d has max(1, d + 1) vertex slots and
+// d + 1 neighbors. Uses the faces' info() of `aside`.
+template <class Aside, class Triangulation, class VertexOf>
+void transplant(Aside& aside, Triangulation& tr, VertexOf vertex_of)
 {
-  using Gt = typename Triangulation::Geom_traits;
-  using Point = typename Triangulation::Point;
-  using Vertex_handle = typename Triangulation::Vertex_handle;
   using Face_handle = typename Triangulation::Face_handle;
-  using Aside_tds = Triangulation_data_structure_2<Triangulation_vertex_base_with_info_2<std::size_t, Gt>,
-                                                   Triangulation_face_base_with_info_2<std::size_t, Gt>>;
-  using Aside = Delaunay_triangulation_2<Gt, Aside_tds>;
-
-  std::vector<Vertex_handle> vertices;
-  std::vector<Point> points;
-  vertices.reserve(tr.number_of_vertices());
-  points.reserve(tr.number_of_vertices());
-  for(auto v = tr.finite_vertices_begin(); v != tr.finite_vertices_end(); ++v) {
-    vertices.push_back(v);
-    points.push_back(v->point());
-  }
-  const std::size_t n = vertices.size();
-  if(n == 0)
-    return;
-
-  Aside aside(tr.geom_traits());
-  std::vector<std::size_t> indices(n);
-  for(std::size_t i = 0; i < n; ++i)
-    indices[i] = i;
-  insert_by_index(aside, points.begin(), indices, [&](std::size_t i, auto v, bool is_new) {
-    if(is_new) {
-      v->info() = i;
-      return;
-    }
-    const std::size_t j = v->info();
-    std::ostringstream msg;
-    msg << "Delaunay_from_prediction::make_delaunay: vertices " << (std::min)(i, j) << " and "
-        << (std::max)(i, j) << " (in finite-vertex order) are both at ("
-        << CGAL::to_double(points[i].x()) << ", " << CGAL::to_double(points[i].y()) << ")";
-    throw Invalid_prediction(msg.str());
-  });
-  stats.points_reinserted += n;
-
-  // Transplant. A face of dimension d has max(1, d + 1) vertex slots and d + 1 neighbors.
   auto& tds = tr.tds();
   const int dimension = aside.dimension();
   const int slots = (std::max)(1, dimension + 1);
   const int neighbors = (std::max)(0, dimension + 1);
-  auto vertex_of = [&](typename Aside::Vertex_handle v) {
-    return v == aside.infinite_vertex() ? tr.infinite_vertex() : vertices[v->info()];
-  };
   tds.faces().clear();
   tds.set_dimension(dimension);
   std::vector<Face_handle> face_of;
@@ -165,6 +126,206 @@ void rebuild_keeping_vertices(Triangulation& tr, Statistics& stats)
       face_of[f->info()]->set_neighbor(j, face_of[f->neighbor(j)->info()]);
   for(auto v = aside.tds().vertices().begin(); v != aside.tds().vertices().end(); ++v)
     vertex_of(v)->set_face(face_of[v->face()->info()]);
+}
+
+// The traits whose predicates decide the faces for traits whose predicates are not exact:
+// Epick's (exact, filtered) on the coordinates rounded to double, which is no rounding for
+// Simple_cartesian<double>.
+using Deciding_gt = Exact_predicates_inexact_constructions_kernel;
+using Deciding_tds = Triangulation_data_structure_2<Triangulation_vertex_base_with_info_2<std::size_t, Deciding_gt>,
+                                                    Triangulation_face_base_with_info_2<std::size_t, Deciding_gt>>;
+using Deciding_dt = Delaunay_triangulation_2<Deciding_gt, Deciding_tds>;
+
+// The Delaunay triangulation of points[0, n) by exact predicates on their coordinates rounded
+// to double, built into `aside` by the package's insertion; every vertex's info() is the index
+// of its first point, and `on_duplicate(i, j)` is called for a point i equal to the point j of
+// a vertex (before anything else happens to it). (CGAL's own insertion with inexact
+// predicates, tried first, lost points, left invalid triangulations and crashed on almost
+// collinear points: it cannot be relied on.) Returns the vertex of each point.
+template <class PointIterator, class OnDuplicate>
+std::vector<Deciding_dt::Vertex_handle> build_deciding(Deciding_dt& aside, PointIterator points, std::size_t n,
+                                                       OnDuplicate on_duplicate)
+{
+  std::vector<Deciding_gt::Point_2> rounded;
+  rounded.reserve(n);
+  for(std::size_t i = 0; i < n; ++i)
+    rounded.emplace_back(CGAL::to_double(points[i].x()), CGAL::to_double(points[i].y()));
+  std::vector<std::size_t> indices(n);
+  for(std::size_t i = 0; i < n; ++i)
+    indices[i] = i;
+  std::vector<Deciding_dt::Vertex_handle> vertex(n);
+  insert_by_index(aside, rounded.begin(), indices, [&](std::size_t i, auto v, bool is_new) {
+    vertex[i] = v;
+    if(is_new)
+      v->info() = i;
+    else
+      on_duplicate(i, v->info());
+  });
+  return vertex;
+}
+
+// After a transplant of faces decided by exact predicates, for traits whose predicates are
+// not exact: flips the edges that the traits' own in-circle test finds not locally Delaunay,
+// where the traits' orientation finds both new faces counterclockwise, so that the result
+// passes the traits' is_valid() where they disagree with exact predicates on nearly
+// co-circular points. At most 4n + 64 flips: it terminates whatever the predicates say.
+template <class Triangulation>
+void settle_with_traits(Triangulation& tr)
+{
+  using Face_handle = typename Triangulation::Face_handle;
+  if(tr.dimension() != 2)
+    return;
+  const auto& gt = tr.geom_traits();
+  auto orientation = gt.orientation_2_object();
+  auto in_circle = gt.side_of_oriented_circle_2_object();
+  std::vector<std::pair<Face_handle, int>> stack;
+  for(auto f = tr.finite_faces_begin(); f != tr.finite_faces_end(); ++f)
+    for(int i = 0; i < 3; ++i)
+      stack.emplace_back(f, i);
+  std::size_t budget = 4 * tr.number_of_vertices() + 64;
+  while(!stack.empty() && budget > 0) {
+    const Face_handle f = stack.back().first;
+    const int i = stack.back().second;
+    stack.pop_back();
+    const Face_handle g = f->neighbor(i);
+    if(tr.is_infinite(f) || tr.is_infinite(g))
+      continue;
+    const int j = tr.mirror_index(f, i);
+    const auto& p = f->vertex(i)->point();
+    const auto& a = f->vertex(ccw(i))->point();
+    const auto& b = f->vertex(cw(i))->point();
+    const auto& q = g->vertex(j)->point();
+    if(in_circle(p, a, b, q) != ON_POSITIVE_SIDE || orientation(p, a, q) != LEFT_TURN ||
+       orientation(p, q, b) != LEFT_TURN)
+      continue;
+    tr.tds().flip(f, i);
+    --budget;
+    for(int k = 0; k < 3; ++k) {
+      stack.emplace_back(f, k);
+      stack.emplace_back(g, k);
+    }
+  }
+}
+
+// For traits whose predicates are not exact (exact_predicates.h), where the package's flips
+// and walks, and CGAL's own insertion too, can cycle, crash or lose points: fills the
+// Delaunay triangulation `dt` (cleared) with points[0, n), its faces decided by exact
+// predicates (build_deciding()), its vertices holding the caller's points. Calls
+// `on_vertex(index, vertex, is_new)` for every point in index order (is_new false for a
+// duplicate of an earlier point).
+template <class DT, class PointIterator, class OnVertex>
+void insert_with_exact_predicates(DT& dt, PointIterator points, std::size_t n, OnVertex on_vertex)
+{
+  using Vertex_handle = typename DT::Vertex_handle;
+  dt.clear();
+  if(n == 0)
+    return;
+  Deciding_dt aside;
+  const std::vector<Deciding_dt::Vertex_handle> at = build_deciding(aside, points, n, [](std::size_t, std::size_t) {});
+  std::vector<Vertex_handle> vertex(n);
+  for(auto v = aside.finite_vertices_begin(); v != aside.finite_vertices_end(); ++v) {
+    const Vertex_handle w = dt.tds().create_vertex();
+    w->set_point(points[v->info()]);
+    vertex[v->info()] = w;
+  }
+  transplant(aside, dt, [&](Deciding_dt::Vertex_handle v) {
+    return v == aside.infinite_vertex() ? dt.infinite_vertex() : vertex[v->info()];
+  });
+  settle_with_traits(dt);
+  for(std::size_t i = 0; i < n; ++i) {
+    const std::size_t first = at[i]->info();
+    on_vertex(i, vertex[first], first == i);
+  }
+}
+
+// The whole build of an entry point for traits whose predicates are not exact: points[0, n)
+// into `dt` by insert_with_exact_predicates(), info() set to the point index (the smallest
+// among duplicates), recorded in `stats` as a fallback.
+template <class DT, class PointIterator>
+void build_with_exact_predicates(DT& dt, PointIterator points, std::size_t n, Statistics& stats)
+{
+  insert_with_exact_predicates(dt, points, n, [&](std::size_t i, auto v, bool is_new) {
+    record_index_info(v, i, is_new, stats.duplicate_points);
+  });
+  stats.fell_back = true;
+  stats.fallback_reason = inexact_predicates;
+  stats.points_reinserted = n;
+}
+
+// Replaces the faces of `tr` by those of DT(its vertices), keeping every vertex object (so
+// vertex handles and info() survive). The new triangulation is built aside by the package's
+// insertion (insert_by_index(); with inexact predicates, by exact ones: build_deciding()), then transplanted face by
+// face, any dimension included. If two vertices are at the same point (for inexact predicates: by the traits'
+// compare_xy, before any insertion), throws Invalid_prediction naming both, before `tr` is modified.
+template <class Triangulation>
+void rebuild_keeping_vertices(Triangulation& tr, Statistics& stats)
+{
+  using Gt = typename Triangulation::Geom_traits;
+  using Point = typename Triangulation::Point;
+  using Vertex_handle = typename Triangulation::Vertex_handle;
+  using Aside_tds = Triangulation_data_structure_2<Triangulation_vertex_base_with_info_2<std::size_t, Gt>,
+                                                   Triangulation_face_base_with_info_2<std::size_t, Gt>>;
+  using Aside = Delaunay_triangulation_2<Gt, Aside_tds>;
+
+  std::vector<Vertex_handle> vertices;
+  std::vector<Point> points;
+  vertices.reserve(tr.number_of_vertices());
+  points.reserve(tr.number_of_vertices());
+  for(auto v = tr.finite_vertices_begin(); v != tr.finite_vertices_end(); ++v) {
+    vertices.push_back(v);
+    points.push_back(v->point());
+  }
+  const std::size_t n = vertices.size();
+  if(n == 0)
+    return;
+
+  auto duplicates = [&](std::size_t i, std::size_t j) {
+    std::ostringstream msg;
+    msg << "Delaunay_from_prediction::make_delaunay: vertices " << (std::min)(i, j) << " and "
+        << (std::max)(i, j) << " (in finite-vertex order) are both at ("
+        << CGAL::to_double(points[i].x()) << ", " << CGAL::to_double(points[i].y()) << ")";
+    throw Invalid_prediction(msg.str());
+  };
+  Aside aside(tr.geom_traits());
+  std::vector<std::size_t> indices(n);
+  for(std::size_t i = 0; i < n; ++i)
+    indices[i] = i;
+  if constexpr(!has_exact_predicates<Gt>::value) {
+    // Duplicates by the traits' exact comparison of coordinates, before any insertion, not
+    // by what an inexact insertion happens to do.
+    auto compare_xy = tr.geom_traits().compare_xy_2_object();
+    std::sort(indices.begin(), indices.end(), [&](std::size_t i, std::size_t j) {
+      const Comparison_result c = compare_xy(points[i], points[j]);
+      return c == SMALLER || (c == EQUAL && i < j);
+    });
+    for(std::size_t k = 1; k < n; ++k)
+      if(compare_xy(points[indices[k - 1]], points[indices[k]]) == EQUAL)
+        duplicates(indices[k - 1], indices[k]);
+    for(std::size_t i = 0; i < n; ++i)
+      indices[i] = i;
+  }
+  stats.points_reinserted += n;
+  if constexpr(!has_exact_predicates<Gt>::value) {
+    // Faces decided by exact predicates (build_deciding()): the same vertex objects, none lost.
+    (void)aside;
+    Deciding_dt exact;
+    build_deciding(exact, points.begin(), n, duplicates); // only where rounding to double merged two points
+    transplant(exact, tr, [&](Deciding_dt::Vertex_handle v) {
+      return v == exact.infinite_vertex() ? tr.infinite_vertex() : vertices[v->info()];
+    });
+    settle_with_traits(tr);
+  } else {
+    insert_by_index(aside, points.begin(), indices, [&](std::size_t i, auto v, bool is_new) {
+      if(is_new) {
+        v->info() = i;
+        return;
+      }
+      duplicates(i, v->info());
+    });
+    transplant(aside, tr, [&](typename Aside::Vertex_handle v) {
+      return v == aside.infinite_vertex() ? tr.infinite_vertex() : vertices[v->info()];
+    });
+  }
 }
 
 } // namespace internal
