@@ -351,19 +351,33 @@ private:
   // hint only chooses where a walk starts.
   void compute_hints()
   {
-    using Vb = Triangulation_vertex_base_with_info_2<std::uint32_t, Gt>;
+    // Inexact predicates (internal/exact_predicates.h): the centres' triangulation by exact
+    // predicates on the coordinates rounded to double (Gt's could crash the insertion).
+    constexpr bool exact = internal::has_exact_predicates<Gt>::value;
+    using Cgt = std::conditional_t<exact, Gt, internal::Deciding_gt>;
+    using Vb = Triangulation_vertex_base_with_info_2<std::uint32_t, Cgt>;
     using Tds = Triangulation_data_structure_2<Vb>;
-    using Centre_triangulation = Delaunay_triangulation_2<Gt, Tds>;
+    using Centre_triangulation = Delaunay_triangulation_2<Cgt, Tds>;
     using Vertex_handle = typename Centre_triangulation::Vertex_handle;
     using Face_handle = typename Centre_triangulation::Face_handle;
     const std::size_t n = size();
     hint_rank_.assign(n, 0);
-    Centre_triangulation dt(traits_);
+    Centre_triangulation dt = [&] {
+      if constexpr(exact)
+        return Centre_triangulation(traits_);
+      else
+        return Centre_triangulation();
+    }();
     internal::Vertex_grid<Vertex_handle> grid(n, xmin_, xmax_, ymin_, ymax_);
     std::vector<std::pair<Face_handle, int>> flip_stack;
     Vertex_handle previous;
     for(std::size_t r = 0; r < n; ++r) {
-      const Point& c = centre_[order_[r]];
+      const typename Cgt::Point_2 c = [&] {
+        if constexpr(exact)
+          return centre_[order_[r]];
+        else
+          return typename Cgt::Point_2(CGAL::to_double(centre_[order_[r]].x()), CGAL::to_double(centre_[order_[r]].y()));
+      }();
       Vertex_handle start = grid.near(c);
       if(start == Vertex_handle() ||
          (previous != Vertex_handle() && internal::squared_distance_in_double(previous->point(), c, scale_) <

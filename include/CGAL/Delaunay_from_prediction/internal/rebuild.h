@@ -191,15 +191,19 @@ void settle_with_traits(Triangulation& tr)
     if(tr.is_infinite(f) || tr.is_infinite(g))
       continue;
     const int j = tr.mirror_index(f, i);
-    const auto& p = f->vertex(i)->point();
-    const auto& a = f->vertex(ccw(i))->point();
-    const auto& b = f->vertex(cw(i))->point();
-    const auto& q = g->vertex(j)->point();
-    if(in_circle(p, a, b, q) != ON_POSITIVE_SIDE || orientation(p, a, q) != LEFT_TURN ||
-       orientation(p, q, b) != LEFT_TURN)
+    // In the vertex order of the faces, as is_valid() evaluates them.
+    auto ccw_face = [&](Face_handle h) {
+      return orientation(h->vertex(0)->point(), h->vertex(1)->point(), h->vertex(2)->point()) == LEFT_TURN;
+    };
+    if(in_circle(f->vertex(0)->point(), f->vertex(1)->point(), f->vertex(2)->point(), g->vertex(j)->point()) !=
+       ON_POSITIVE_SIDE)
       continue;
     tr.tds().flip(f, i);
     --budget;
+    if(!ccw_face(f) || !ccw_face(g)) { // not convex for the traits: undone
+      tr.tds().flip(f, f->index(g));
+      continue;
+    }
     for(int k = 0; k < 3; ++k) {
       stack.emplace_back(f, k);
       stack.emplace_back(g, k);
