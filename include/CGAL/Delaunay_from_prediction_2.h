@@ -357,11 +357,9 @@ for that to pay off is rebuilt from scratch (`Statistics::fell_back`).
 \throws Invalid_prediction if a point has a non-finite coordinate, or a face has an index out
         of range or repeats an index. Then `dt` is unchanged.
 
-With traits whose predicates are not exact (neither filtered nor on an exact number type, e.g.
-`Simple_cartesian<double>`), whose flips and walks could cycle or corrupt, the faces are only
-checked and the triangulation is decided by exact predicates on the coordinates rounded to double
-(no rounding for `Simple_cartesian<double>`; `Statistics::fell_back`), so that the call terminates
-with all the points, whereas \cgal's own insertion with such traits may lose points or crash.
+With traits whose predicates are not exact (e.g. `Simple_cartesian<double>`), the triangulation
+is built from scratch, decided by exact predicates on the coordinates rounded to double
+(`Statistics::fell_back`): see \ref dfpInexactKernels.
 */
 template <class PointRange, class FaceRange, class DT,
           class NamedParameters = parameters::Default_named_parameters>
@@ -394,7 +392,7 @@ Statistics delaunay_from_prediction(const PointRange& points, const FaceRange& f
   // Check, then import and certify into a fresh triangulation (Invalid_prediction is thrown
   // before `dt` is touched).
   internal::check_points_are_finite(point_at, n);
-  if constexpr(!internal::has_exact_predicates<typename DT::Geom_traits>::value) {
+  if constexpr(internal::decides_by_exact_predicates<typename DT::Geom_traits>::value) {
     // Inexact predicates (internal/exact_predicates.h): the faces are only checked (malformed
     // ones throw), the faces are decided by exact predicates (rebuild.h).
     std::size_t k = 0, idx[3];
@@ -596,11 +594,9 @@ the holes retriangulated and the carved vertices reinserted (the same vertex obj
 place (see the user manual, "Local Repair"). Past the budgets (too many inverted faces, too
 much carving, too many flips), or when moves change the dimension, its faces are rebuilt around
 the same vertex objects (`Statistics::fell_back`).
-With a kernel whose predicates are not exact (neither filtered nor on an exact number type,
-e.g. `Simple_cartesian<double>`), whose flips and walks may cycle, the faces are always
-rebuilt around the same vertex objects, decided by exact predicates on the coordinates rounded to
-double (no rounding for `Simple_cartesian<double>`; `Statistics::fell_back`), so that the call
-terminates with every vertex, whereas \cgal's own insertion with such traits may lose points or crash.
+With traits whose predicates are not exact (e.g. `Simple_cartesian<double>`), the faces are
+always rebuilt around the same vertex objects, decided by exact predicates on the coordinates
+rounded to double (`Statistics::fell_back`): see \ref dfpInexactKernels.
 
 \tparam Triangulation a `CGAL::Triangulation_2<Gt, Tds>` or `CGAL::Delaunay_triangulation_2<Gt, Tds>`,
         for any triangulation data structure, or a `CGAL::Triangulation_hierarchy_2` of one (its
@@ -647,7 +643,7 @@ Statistics make_delaunay(Triangulation& tr, const NamedParameters& np = paramete
     return stats;
   // Inexact predicates (internal/exact_predicates.h): flips, walks and certificates could
   // cycle or corrupt; the faces are rebuilt around the same vertices, decided by exact predicates.
-  if constexpr(!internal::has_exact_predicates<typename Triangulation::Geom_traits>::value) {
+  if constexpr(internal::decides_by_exact_predicates<typename Triangulation::Geom_traits>::value) {
     stats.fell_back = true;
     stats.fallback_reason = internal::inexact_predicates;
     internal::rebuild_keeping_vertices(tr, stats); // leaves `tr` as it is when it throws

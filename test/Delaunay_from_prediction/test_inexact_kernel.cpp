@@ -3,8 +3,9 @@
 // Author(s): Delaunay_from_prediction contributors
 //
 // The project rule for inexact kernels: with Simple_cartesian<double> (no filtered or exact
-// predicates) every entry point terminates, without a crash, with a triangulation that passes
-// is_valid() wherever CGAL's own Delaunay_triangulation_2<SC> build of the same points does.
+// predicates) every entry point terminates, without a crash, with the Delaunay triangulation
+// decided by exact predicates on the same doubles: CGAL's Epick build, as coordinates and,
+// where the vertices carry a point index, as index triples.
 // The minimized fuzzer findings (fuzz.md F6, F7, F8 "related", F9, F12), then seeded random
 // small cases per entry point: uniform, almost collinear (y = 3x + 1 rounded), almost
 // co-circular (the unit circle rounded), and make_delaunay moves onto a line or a circle.
@@ -23,12 +24,16 @@
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Gmpq.h>
+#include <CGAL/Projection_traits_xz_3.h>
 #include <CGAL/Simple_cartesian.h>
+#include <CGAL/Triangulation_hierarchy_2.h>
+#include <CGAL/Triangulation_hierarchy_vertex_base_2.h>
 
 #include <array>
 #include <cmath>
 #include <cstdint>
 #include <set>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -37,6 +42,9 @@ using SC = CGAL::Simple_cartesian<double>;
 using Point = SC::Point_2;
 using Pts = std::vector<std::array<double, 2>>;
 using Random = DFP::internal::Splitmix64;
+using Hierarchy = CGAL::Triangulation_hierarchy_2<CGAL::Delaunay_triangulation_2<
+    SC, CGAL::Triangulation_data_structure_2<CGAL::Triangulation_hierarchy_vertex_base_2<
+            CGAL::Triangulation_vertex_base_with_info_2<std::size_t, SC>>>>>;
 
 namespace {
 
@@ -67,38 +75,16 @@ bool distinct(const std::vector<Point>& p)
   return true;
 }
 
-// Whether CGAL's own SC build of the points is valid: the rule asks for validity only there.
-// That build may itself crash, loop or lose points on almost collinear points: it runs in a child.
-bool cgal_build_is_valid(const std::vector<Point>& p)
-{
-#if defined(__unix__) || defined(__APPLE__)
-  std::cout.flush();
-  std::cerr.flush();
-  const pid_t child = fork();
-  if(child == 0) {
-    alarm(time_limit / 4); // it can also loop: then it is not valid
-    DT_plain<SC> dt(p.begin(), p.end());
-    std::_Exit(dt.is_valid() && dt.number_of_vertices() == std::set<Point>(p.begin(), p.end()).size() ? 0 : 1);
-  }
-  if(child > 0) {
-    int status = 0;
-    waitpid(child, &status, 0);
-    return WIFEXITED(status) && WEXITSTATUS(status) == 0;
-  }
-#endif
-  DT_plain<SC> dt(p.begin(), p.end());
-  return dt.is_valid();
-}
-
 // make_delaunay after moving the vertices of a triangulation of p0 to p1: terminates, keeps the
-// vertex objects, their points and info, and is valid (or throws naming two equal points).
+// vertex objects, their points and info, and gives the Delaunay triangulation decided by exact
+// predicates (CGAL's Epick build of the same doubles), or throws naming two equal points.
 template <class Tr>
-void check_make_delaunay(const Pts& p0, const Pts& p1, bool cgal_valid)
+void check_make_delaunay(const Pts& p0, const Pts& p1)
 {
   const std::vector<Point> P0 = to_points(p0), P1 = to_points(p1);
   Tr tr;
   Handles<Tr> handles;
-  build(tr, P0, handles);
+  build(tr, P0, handles); // by exact predicates (test_util.h): CGAL's SC insertion can crash
   for(std::size_t i = 0; i < handles.size(); ++i)
     handles[i]->set_point(P1[i]);
   if(!distinct(P1)) {
@@ -108,28 +94,34 @@ void check_make_delaunay(const Pts& p0, const Pts& p1, bool cgal_valid)
   const DFP::Statistics s = DFP::make_delaunay(tr);
   DFP_CHECK(s.fell_back); // inexact predicates: always rebuilt
   check_handles(tr, handles, P1);
-  if(cgal_valid)
-    DFP_CHECK(tr.is_valid());
+  check_is_cgal_delaunay<CGAL::Epick>(tr, P1);
 }
 
 void check_make_delaunay_all(const Pts& p0, const Pts& p1)
 {
-  const bool cgal_valid = cgal_build_is_valid(to_points(p1));
-  check_make_delaunay<T2_plain<SC>>(p0, p1, cgal_valid);
-  check_make_delaunay<T2_with_info<SC>>(p0, p1, cgal_valid);
-  check_make_delaunay<DT_plain<SC>>(p0, p1, cgal_valid);
-  check_make_delaunay<DT_with_info<SC>>(p0, p1, cgal_valid);
+  check_make_delaunay<T2_plain<SC>>(p0, p1);
+  check_make_delaunay<T2_with_info<SC>>(p0, p1);
+  check_make_delaunay<DT_plain<SC>>(p0, p1);
+  check_make_delaunay<DT_with_info<SC>>(p0, p1);
 }
 
+// `dt` is the Delaunay triangulation of P decided by exact predicates: CGAL's Epick build of
+// the same doubles, compared by coordinates (the info is checked where it is a point index).
 template <class DT>
 void check_result(const DT& dt, const std::vector<Point>& P)
 {
-  std::set<std::pair<double, double>> seen;
-  for(const Point& q : P)
-    seen.insert({q.x(), q.y()});
-  DFP_CHECK_MSG(dt.number_of_vertices() == seen.size(), dt.number_of_vertices() << " vs " << seen.size());
-  if(cgal_build_is_valid(P))
-    DFP_CHECK(dt.is_valid());
+  auto to_epick = [](const Point& p) { return CGAL::Epick::Point_2(p.x(), p.y()); };
+  std::vector<CGAL::Epick::Point_2> E;
+  for(const Point& p : P)
+    E.push_back(to_epick(p));
+  const CGAL::Delaunay_triangulation_2<CGAL::Epick> reference(E.begin(), E.end());
+  DFP_CHECK(dt.tds().is_valid());
+  DFP_CHECK_MSG(dt.number_of_vertices() == reference.number_of_vertices(),
+                dt.number_of_vertices() << " vs " << reference.number_of_vertices());
+  const auto got = geometry_of(dt, to_epick), expected = geometry_of(reference);
+  DFP_CHECK(got.vertices == expected.vertices);
+  DFP_CHECK(got.edges == expected.edges);
+  DFP_CHECK(got.faces == expected.faces);
 }
 
 void check_imprecise(const Pts& centres, const std::vector<double>& radii, const Pts& instance)
@@ -167,7 +159,7 @@ void check_builds(const Pts& p)
   { // delaunay_from_prediction: CGAL's faces, and those faces reversed and partly deleted
     DT_with_info<SC> dt;
     DFP::delaunay_from_prediction(P, exact, dt);
-    check_result(dt, P);
+    check_is_cgal_delaunay<CGAL::Epick>(dt, P);
     Faces noisy = reversed(exact);
     if(noisy.size() > 2)
       noisy.resize(noisy.size() - 1);
@@ -175,10 +167,19 @@ void check_builds(const Pts& p)
     DFP::delaunay_from_prediction(P, noisy, dt2);
     check_result(dt2, P);
   }
+  { // a Triangulation_hierarchy_2: level 0 decided exactly, the upper levels left empty
+    Hierarchy h;
+    DFP::delaunay_from_prediction(P, exact, h);
+    check_is_cgal_delaunay<CGAL::Epick>(static_cast<const Hierarchy::Tr_Base&>(h), P);
+    bool linked = false;
+    for(auto v = h.Tr_Base::finite_vertices_begin(); v != h.Tr_Base::finite_vertices_end(); ++v)
+      linked = linked || v->up() != Hierarchy::Vertex_handle();
+    DFP_CHECK(!linked);
+  }
   { // brio_dc_delaunay
     DT_with_info<SC> dt;
     DFP::brio_dc_delaunay(P, dt);
-    check_result(dt, P);
+    check_is_cgal_delaunay<CGAL::Epick>(dt, P);
   }
   { // delaunay_from_spanning_graph: a path through the points
     std::vector<std::array<std::size_t, 2>> path;
@@ -269,10 +270,13 @@ int main(int argc, char** argv)
   const std::size_t count = argc > 1 ? std::size_t(std::stoul(argv[1])) : 300;
 
   // The trait that routes the kernels (internal/exact_predicates.h).
-  DFP_CHECK(!DFP::internal::has_exact_predicates<SC>::value);
+  DFP_CHECK(DFP::internal::decides_by_exact_predicates<SC>::value);
   DFP_CHECK(DFP::internal::has_exact_predicates<CGAL::Epick>::value);
   DFP_CHECK(DFP::internal::has_exact_predicates<CGAL::Epeck>::value);
   DFP_CHECK(DFP::internal::has_exact_predicates<CGAL::Simple_cartesian<CGAL::Gmpq>>::value);
+  DFP_CHECK(!DFP::internal::decides_by_exact_predicates<CGAL::Epick>::value);
+  // 3D points under projection traits: no 2D coordinates to round, the traits are used as they are.
+  DFP_CHECK(!DFP::internal::decides_by_exact_predicates<CGAL::Projection_traits_xz_3<SC>>::value);
 
   // F6: a spurious "vertices i and j are both at ..." for distinct moved points.
   isolated("F6 make_delaunay, moved onto y = 3x + 1", [] {
@@ -325,6 +329,26 @@ int main(int argc, char** argv)
                  {0.17364817766692997, -0.98480775301220813}, {0.17364817766693041, 0.98480775301220802}},
                 std::vector<bool>(4, false));
   }, time_limit);
+
+  // Extreme scales: CGAL's own SC predicates overflow or underflow there; the decision is exact.
+  for(const double scale : {std::ldexp(1.0, -1060), 1e-300, 1e300, 1.5e307}) {
+    Random rng{7};
+    for(const Family family : {uniform, collinear, cocircular}) {
+      Pts p = random_points(rng, family, 40);
+      for(auto& xy : p)
+        xy = {xy[0] * scale, xy[1] * scale};
+      std::ostringstream at;
+      at << " at scale " << scale << ", " << family_name[family];
+      isolated("builds" + at.str(),
+               [&] { check_builds(p); }, time_limit);
+      Pts q = random_points(rng, uniform, 40);
+      for(auto& xy : q)
+        xy = {xy[0] * scale, xy[1] * scale};
+      if(distinct(to_points(q)))
+        isolated("make_delaunay" + at.str(),
+               [&] { check_make_delaunay_all(q, p); }, time_limit);
+    }
+  }
 
   random_cases(1, count);
   return finish("test_inexact_kernel");

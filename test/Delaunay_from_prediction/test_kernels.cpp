@@ -31,7 +31,7 @@ struct Kernel_test
   CGAL::Random rng{2718};
   // Inexact predicates (Simple_cartesian<double>): every entry point builds with CGAL's own
   // insertion (a fallback), so the checks of how the prediction was used do not apply.
-  static constexpr bool exact_predicates = DFP::internal::has_exact_predicates<K>::value;
+  static constexpr bool exact_predicates = !DFP::internal::decides_by_exact_predicates<K>::value;
 
   // delaunay_from_prediction into a pre-filled dt; compares with CGAL if `compare`.
   template <class DT, class NP = DFP::parameters::Default_named_parameters>

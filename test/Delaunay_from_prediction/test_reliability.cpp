@@ -440,7 +440,7 @@ void damaged_at_scales()
 }
 
 // ---------------------------------------------------------------------------------------------
-// 4. Inexact kernel: terminates with a valid triangulation
+// 4. Inexact kernel: the Delaunay triangulation decided by exact predicates (Epick's)
 // ---------------------------------------------------------------------------------------------
 
 void inexact_kernel()
@@ -454,8 +454,9 @@ void inexact_kernel()
       p = seed % 3 == 0 ? XY{double(rng.below(5)), double(rng.below(5))} : XY{rng.uniform(), rng.uniform()};
     const auto points = from_xy<K>(xy);
     CGAL::Random crng{unsigned(seed)};
-    std::vector<Faces> predictions = {delaunay_faces<K>(points), random_triples(n, 2 * n, crng),
-                                      flipped_delaunay_faces<K>(points, n / 3, crng)};
+    const auto exact_points = from_xy<Epick>(xy);
+    std::vector<Faces> predictions = {delaunay_faces<Epick>(exact_points), random_triples(n, 2 * n, crng),
+                                      flipped_delaunay_faces<Epick>(exact_points, n / 3, crng)};
     for(const Faces& faces : predictions) {
       Scope scope("seed ", seed, " n=", n, " faces ", faces_text(faces));
       for(const Mode m : all_modes) {
@@ -464,7 +465,7 @@ void inexact_kernel()
         const DFP::Statistics s = with_mode(m, [&](const auto& np) {
           return DFP::delaunay_from_prediction(points, faces, dt, np);
         });
-        DFP_CHECK(dt.is_valid());
+        check_is_cgal_delaunay<Epick>(dt, points); // the exact decision on the same doubles
         DFP_CHECK_MSG(s.duplicate_points + dt.number_of_vertices() == n, describe(s));
         DFP_CHECK(s.faces_in == faces.size());
       }
@@ -474,10 +475,20 @@ void inexact_kernel()
     for(auto v = tr.finite_vertices_begin(); v != tr.finite_vertices_end(); ++v)
       v->set_point(make_point<K>(CGAL::to_double(v->point().x()) + (rng.uniform() - 0.5) * 0.1,
                                  CGAL::to_double(v->point().y()) + (rng.uniform() - 0.5) * 0.1));
+    std::vector<K::Point_2> moved;
+    for(auto v = tr.finite_vertices_begin(); v != tr.finite_vertices_end(); ++v)
+      moved.push_back(v->point());
     try {
       DFP::make_delaunay(tr);
-      DFP_CHECK(tr.is_valid());
+      DFP_CHECK(tr.tds().is_valid());
+      const auto to_epick = [](const K::Point_2& p) { return Epick::Point_2(p.x(), p.y()); };
+      std::vector<Epick::Point_2> exact_moved;
+      for(const auto& p : moved)
+        exact_moved.push_back(to_epick(p));
+      const CGAL::Delaunay_triangulation_2<Epick> reference(exact_moved.begin(), exact_moved.end());
+      DFP_CHECK(geometry_of(tr, to_epick).faces == geometry_of(reference).faces);
     } catch(const DFP::Invalid_prediction&) {
+      DFP_CHECK(std::set<K::Point_2>(moved.begin(), moved.end()).size() < moved.size()); // two moved onto one point
     }
   }
 }

@@ -667,19 +667,21 @@ struct Geometry
   std::vector<std::array<Point, 3>> faces;   // finite faces, ccw, canonical rotation, sorted
 };
 
-template <class Tr>
-Geometry<typename Tr::Point> geometry_of(const Tr& tr)
+// The geometry of `tr`, its points read through `to_point` (the identity by default; a
+// conversion to another kernel's points compares triangulations across kernels).
+template <class Tr, class ToPoint>
+auto geometry_of(const Tr& tr, ToPoint to_point)
 {
-  using Point = typename Tr::Point;
+  using Point = std::decay_t<decltype(to_point(std::declval<const typename Tr::Point&>()))>;
   Geometry<Point> g;
   g.dimension = tr.dimension();
   for(auto v = tr.finite_vertices_begin(); v != tr.finite_vertices_end(); ++v)
-    g.vertices.push_back(v->point());
+    g.vertices.push_back(to_point(v->point()));
   std::sort(g.vertices.begin(), g.vertices.end());
   if(tr.dimension() >= 1)
     for(auto e = tr.finite_edges_begin(); e != tr.finite_edges_end(); ++e) {
-      std::array<Point, 2> s = {e->first->vertex(tr.cw(e->second))->point(),
-                                e->first->vertex(tr.ccw(e->second))->point()};
+      std::array<Point, 2> s = {to_point(e->first->vertex(tr.cw(e->second))->point()),
+                                to_point(e->first->vertex(tr.ccw(e->second))->point())};
       if(s[1] < s[0])
         std::swap(s[0], s[1]);
       g.edges.push_back(s);
@@ -688,9 +690,15 @@ Geometry<typename Tr::Point> geometry_of(const Tr& tr)
   if(tr.dimension() == 2)
     for(auto f = tr.finite_faces_begin(); f != tr.finite_faces_end(); ++f)
       g.faces.push_back(canonical(std::array<Point, 3>{
-          f->vertex(0)->point(), f->vertex(1)->point(), f->vertex(2)->point()}));
+          to_point(f->vertex(0)->point()), to_point(f->vertex(1)->point()), to_point(f->vertex(2)->point())}));
   std::sort(g.faces.begin(), g.faces.end());
   return g;
+}
+
+template <class Tr>
+Geometry<typename Tr::Point> geometry_of(const Tr& tr)
+{
+  return geometry_of(tr, [](const typename Tr::Point& p) { return p; });
 }
 
 template <class T>
@@ -712,22 +720,39 @@ std::map<Point, std::size_t> smallest_indices(const std::vector<Point>& points)
   return first;
 }
 
-// Checks that `tr` is exactly CGAL's Delaunay triangulation of `points` (same traits): valid,
-// same dimension, vertices, edges and faces (by coordinates); and, where the vertices carry
-// info, that each info is the smallest index of its point and that the faces agree as index
-// triples. Returns true if everything matched.
-template <class Tr, class Point>
+// Checks that `tr` is exactly CGAL's Delaunay triangulation of `points` with the traits `Gt`
+// (by default those of `tr`): valid, same dimension, vertices, edges and faces (by
+// coordinates); and, where the vertices carry info, that each info is the smallest index of
+// its point and that the faces agree as index triples. With other traits than those of `tr`
+// (the reference for inexact kernels: `CGAL::Epick`, the exact decision on the same doubles)
+// the points are compared rounded to double, and validity is that of the data structure, the
+// faces' orientation being the reference's. Returns true if everything matched.
+template <class Gt = void, class Tr, class Point>
 bool check_is_cgal_delaunay(const Tr& tr, const std::vector<Point>& points)
 {
-  using Gt = typename Tr::Geom_traits;
+  using Ref_gt = std::conditional_t<std::is_void<Gt>::value, typename Tr::Geom_traits, Gt>;
+  using Ref_point = typename Ref_gt::Point_2;
+  constexpr bool same_traits = std::is_same<Ref_gt, typename Tr::Geom_traits>::value;
+  auto to_ref = [](const Point& p) {
+    if constexpr(same_traits)
+      return p;
+    else
+      return Ref_point(CGAL::to_double(p.x()), CGAL::to_double(p.y()));
+  };
   const int before = failures();
-  const CGAL::Delaunay_triangulation_2<Gt> reference(points.begin(), points.end());
-  DFP_CHECK(tr.is_valid());
+  std::vector<Ref_point> ref_points;
+  for(const Point& p : points)
+    ref_points.push_back(to_ref(p));
+  const CGAL::Delaunay_triangulation_2<Ref_gt> reference(ref_points.begin(), ref_points.end());
+  if constexpr(same_traits)
+    DFP_CHECK(tr.is_valid());
+  else
+    DFP_CHECK(tr.tds().is_valid());
   DFP_CHECK_MSG(tr.dimension() == reference.dimension(),
                 tr.dimension() << " vs " << reference.dimension());
   DFP_CHECK_MSG(tr.number_of_vertices() == reference.number_of_vertices(),
                 tr.number_of_vertices() << " vs " << reference.number_of_vertices());
-  const Geometry<Point> got = geometry_of(tr), expected = geometry_of(reference);
+  const Geometry<Ref_point> got = geometry_of(tr, to_ref), expected = geometry_of(reference);
   DFP_CHECK(got.vertices == expected.vertices);
   DFP_CHECK_MSG(got.edges == expected.edges,
                 count_missing(got.edges, expected.edges) << " edges not in CGAL's DT, "
@@ -737,10 +762,10 @@ bool check_is_cgal_delaunay(const Tr& tr, const std::vector<Point>& points)
                     << count_missing(expected.faces, got.faces) << " of CGAL's missing (of "
                     << expected.faces.size() << ")");
   if constexpr(has_vertex_info<Tr>) {
-    const auto first = smallest_indices(points);
+    const auto first = smallest_indices(ref_points);
     bool info_ok = true;
     for(auto v = tr.finite_vertices_begin(); v != tr.finite_vertices_end(); ++v) {
-      const auto it = first.find(v->point());
+      const auto it = first.find(to_ref(v->point()));
       info_ok = info_ok && it != first.end() && std::size_t(v->info()) == it->second;
     }
     DFP_CHECK_MSG(info_ok, "a vertex info is not the smallest index of its point");
@@ -922,18 +947,57 @@ void check_unchanged(const Tr& tr, const Snapshot<Tr>& before)
 template <class Tr>
 using Handles = std::vector<typename Tr::Vertex_handle>;
 
-// Inserts the points one by one; handle i holds point i and, if the vertices have info, info i.
+// Inserts the points one by one; handle i holds point i (or the vertex of an equal earlier
+// point) and, if the vertices have info, info i (the first index of a point). With traits
+// whose predicates are not exact, whose insertion can crash or lose almost collinear points,
+// the faces are those of CGAL's Epick Delaunay triangulation of the same doubles instead.
+template <class Tr>
+void insert_all(Tr& tr, const std::vector<typename Tr::Point>& points, Handles<Tr>& handles)
+{
+  using Vertex_handle = typename Tr::Vertex_handle;
+  if constexpr(DFP::internal::decides_by_exact_predicates<typename Tr::Geom_traits>::value) {
+    using Aside = DFP::internal::Deciding_dt;
+    std::vector<std::pair<Aside::Point, std::size_t>> pairs;
+    for(std::size_t i = 0; i < points.size(); ++i)
+      pairs.emplace_back(Aside::Point(CGAL::to_double(points[i].x()), CGAL::to_double(points[i].y())), i);
+    Aside aside;
+    std::map<Aside::Point, std::size_t> first;
+    for(const auto& [p, i] : pairs)
+      first.emplace(p, i);
+    aside.insert(pairs.begin(), pairs.end());
+    tr.clear();
+    std::vector<Vertex_handle> vertex(points.size());
+    for(auto v = aside.finite_vertices_begin(); v != aside.finite_vertices_end(); ++v) {
+      v->info() = first.at(v->point());
+      vertex[v->info()] = tr.tds().create_vertex();
+      vertex[v->info()]->set_point(points[v->info()]);
+      if constexpr(has_vertex_info<Tr>)
+        vertex[v->info()]->info() = v->info();
+    }
+    DFP::internal::transplant(aside, tr, [&](Aside::Vertex_handle v) {
+      return v == aside.infinite_vertex() ? tr.infinite_vertex() : vertex[v->info()];
+    });
+    for(std::size_t i = 0; i < points.size(); ++i)
+      handles.push_back(vertex[first.at(pairs[i].first)]);
+    return;
+  }
+  typename Tr::Face_handle hint;
+  for(std::size_t i = 0; i < points.size(); ++i) {
+    const std::size_t before = tr.number_of_vertices();
+    const Vertex_handle v = tr.insert(points[i], hint);
+    handles.push_back(v);
+    if constexpr(has_vertex_info<Tr>)
+      if(tr.number_of_vertices() != before)
+        v->info() = i;
+    hint = v->face();
+  }
+}
+
+// insert_all() of distinct points: handle i holds point i and, with info, info i.
 template <class Tr>
 void build(Tr& tr, const std::vector<typename Tr::Point>& points, Handles<Tr>& handles)
 {
-  typename Tr::Face_handle hint;
-  for(std::size_t i = 0; i < points.size(); ++i) {
-    const auto v = tr.insert(points[i], hint);
-    handles.push_back(v);
-    if constexpr(has_vertex_info<Tr>)
-      v->info() = i;
-    hint = v->face();
-  }
+  insert_all(tr, points, handles);
   DFP_CHECK(tr.number_of_vertices() == points.size());
 }
 

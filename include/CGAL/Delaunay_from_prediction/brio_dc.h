@@ -460,11 +460,9 @@ points (co-circular ties broken by \cgal's symbolic perturbation).
         points or more; `std::invalid_argument` if `sample_probability` is not in \f$(0, 1]\f$.
         Then `dt` is unchanged.
 
-With traits whose predicates are not exact (neither filtered nor on an exact number type, e.g.
-`Simple_cartesian<double>`), whose walks and flips could cycle or corrupt, the faces are decided
-by exact predicates on the coordinates rounded to double (no rounding for
-`Simple_cartesian<double>`; `Statistics::fell_back`), so that the call terminates with all the
-points, whereas \cgal's own insertion with such traits may lose points or crash.
+With traits whose predicates are not exact (e.g. `Simple_cartesian<double>`), the triangulation
+is built from scratch, decided by exact predicates on the coordinates rounded to double
+(`Statistics::fell_back`): see \ref dfpInexactKernels.
 */
 template <class PointRange, class DT, class NamedParameters = parameters::Default_named_parameters>
 Statistics brio_dc_delaunay(const PointRange& points, DT& dt, const NamedParameters& np = parameters::default_values())
@@ -495,7 +493,7 @@ Statistics brio_dc_delaunay(const PointRange& points, DT& dt, const NamedParamet
   stats.points_reinserted = n;
   if(n == 0)
     return stats;
-  if constexpr(!internal::has_exact_predicates<typename DT::Geom_traits>::value) {
+  if constexpr(internal::decides_by_exact_predicates<typename DT::Geom_traits>::value) {
     internal::build_with_exact_predicates(dt, point_begin, n, stats); // inexact predicates: decided by exact ones
     return stats;
   }

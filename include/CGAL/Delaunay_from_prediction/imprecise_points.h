@@ -210,11 +210,9 @@ public:
   \throws Invalid_prediction if `instance` does not have `size()` points or a point has a
           non-finite coordinate. Then `dt` is unchanged.
 
-  With traits whose predicates are not exact (neither filtered nor on an exact number type,
-  e.g. `Simple_cartesian<double>`), whose walks and flips could cycle or corrupt, the faces
-  are decided by exact predicates on the coordinates rounded to double instead (no rounding for
-  `Simple_cartesian<double>`; `Statistics::fell_back`), so that the call terminates with all the
-  points, whereas \cgal's own insertion with such traits may lose points or crash.
+  With traits whose predicates are not exact (e.g. `Simple_cartesian<double>`), the triangulation
+  is built from scratch, decided by exact predicates on the coordinates rounded to double
+  (`Statistics::fell_back`): see \ref dfpInexactKernels.
   */
   template <class PointRange, class DT, class NamedParameters = parameters::Default_named_parameters>
   Statistics triangulate(const PointRange& instance, DT& dt,
@@ -241,7 +239,7 @@ public:
     stats.points_reinserted = n;
     if(n == 0)
       return stats;
-    if constexpr(!internal::has_exact_predicates<Gt>::value) {
+    if constexpr(internal::decides_by_exact_predicates<Gt>::value) {
       // Inexact predicates (internal/exact_predicates.h): faces decided by exact predicates
       // (rebuild.h), the walks and flips below relying on consistent predicates.
       internal::build_with_exact_predicates(dt, points, n, stats);
@@ -353,7 +351,7 @@ private:
   {
     // Inexact predicates (internal/exact_predicates.h): the centres' triangulation by exact
     // predicates on the coordinates rounded to double (Gt's could crash the insertion).
-    constexpr bool exact = internal::has_exact_predicates<Gt>::value;
+    constexpr bool exact = !internal::decides_by_exact_predicates<Gt>::value;
     using Cgt = std::conditional_t<exact, Gt, internal::Deciding_gt>;
     using Vb = Triangulation_vertex_base_with_info_2<std::uint32_t, Cgt>;
     using Tds = Triangulation_data_structure_2<Vb>;

@@ -94,11 +94,9 @@ points (co-circular ties broken by CGAL's symbolic perturbation), whatever the g
 \throws Invalid_prediction if a point has a non-finite coordinate, or an edge has an end out of
         range or joins a point to itself. Then `dt` is unchanged.
 
-With traits whose predicates are not exact (neither filtered nor on an exact number type, e.g.
-`Simple_cartesian<double>`), whose walks and flips could cycle or corrupt, the faces are decided
-by exact predicates on the coordinates rounded to double (no rounding for
-`Simple_cartesian<double>`; `Statistics::fell_back`), so that the call terminates with all the
-points, whereas \cgal's own insertion with such traits may lose points or crash.
+With traits whose predicates are not exact (e.g. `Simple_cartesian<double>`), the triangulation
+is built from scratch, decided by exact predicates on the coordinates rounded to double
+(`Statistics::fell_back`): see \ref dfpInexactKernels.
 */
 template <class PointRange, class EdgeRange, class DT,
           class NamedParameters = parameters::Default_named_parameters>
@@ -119,7 +117,7 @@ Statistics delaunay_from_spanning_graph(const PointRange& points, const EdgeRang
   const std::vector<std::uint32_t> ends = internal::checked_edge_ends(edges, n);
   stats.edges_in = ends.size() / 2;
   dt.clear();
-  if constexpr(!internal::has_exact_predicates<typename DT::Geom_traits>::value)
+  if constexpr(internal::decides_by_exact_predicates<typename DT::Geom_traits>::value)
     internal::build_with_exact_predicates(dt, point_at, n, stats); // inexact predicates: decided by exact ones
   else
     internal::build_along_edges(dt, point_at, n, ends, stats);

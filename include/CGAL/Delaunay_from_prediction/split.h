@@ -274,11 +274,9 @@ the paper's bound is not proven for it), which measured slower (see the user man
 \throws Invalid_prediction if `dt1` or `dt2` is `dt`, or `dt1` is `dt2`. Then nothing is
         changed. An exception thrown by `is_in_first` leaves `dt1` and `dt2` unchanged too.
 
-With traits whose predicates are not exact (neither filtered nor on an exact number type, e.g.
-`Simple_cartesian<double>`), whose walks and flips could cycle or corrupt, each part is decided
-by exact predicates on the coordinates rounded to double instead (no rounding for
-`Simple_cartesian<double>`; `Statistics::fell_back`), so that the call terminates with all the
-points, whereas \cgal's own insertion with such traits may lose points or crash.
+With traits whose predicates are not exact (e.g. `Simple_cartesian<double>`), each part is
+built from scratch, decided by exact predicates on the coordinates rounded to double
+(`Statistics::fell_back`): see \ref dfpInexactKernels.
 */
 template <class DT, class IsInFirst, class DT1, class DT2,
           class NamedParameters = parameters::Default_named_parameters>
@@ -325,7 +323,7 @@ Statistics split_delaunay(const DT& dt, IsInFirst is_in_first, DT1& dt1, DT2& dt
   stats.points_reinserted = n;
   dt1.clear();
   dt2.clear();
-  if constexpr(!internal::has_exact_predicates<typename DT::Geom_traits>::value) {
+  if constexpr(internal::decides_by_exact_predicates<typename DT::Geom_traits>::value) {
     // Inexact predicates (internal/exact_predicates.h): each part decided by exact predicates.
     (void)method;
     (void)seed;

@@ -12,6 +12,8 @@
 #ifndef CGAL_DELAUNAY_FROM_PREDICTION_INTERNAL_HIERARCHY_H
 #define CGAL_DELAUNAY_FROM_PREDICTION_INTERNAL_HIERARCHY_H
 
+#include <CGAL/Delaunay_from_prediction/internal/exact_predicates.h>
+
 #include <CGAL/Triangulation_hierarchy_2.h>
 
 #include <stdexcept>
@@ -64,11 +66,18 @@ void clear_upper_levels(Hierarchy& h, bool unlink = true)
 }
 
 // Samples the upper levels of `h` anew from its level 0, which must be a valid triangulation.
+// With traits whose predicates are not exact (exact_predicates.h) the upper levels are left
+// empty: filling them is CGAL's insertion with those predicates, which can crash or loop on
+// almost collinear points; an empty upper level is valid, and locations start at level 0.
 template <class Hierarchy>
 void rebuild_upper_levels(Hierarchy& h)
 {
   using Tr_Base = typename Hierarchy::Tr_Base;
   using Vertex_handle = typename Tr_Base::Vertex_handle;
+  if constexpr(decides_by_exact_predicates<typename Hierarchy::Geom_traits>::value) {
+    clear_upper_levels(h);
+    return;
+  }
   clear_upper_levels(h, false);
   // While level 0 reads as of dimension 0, the hierarchy's insert(p, VERTEX, f, i) costs a
   // level drawn and nothing else for the 29 vertices in 30 that stay at level 0: a

@@ -82,22 +82,6 @@ void insert_points(DT& dt, PointIterator points, std::vector<std::size_t>& indic
   stats.duplicate_points += duplicates;
 }
 
-// Builds DT(points) from scratch into `dt`, which holds no vertex. `grid_order`, if not
-// empty, lists all the indices in grid order (the import had sorted them so): they
-// are only dealt into rounds, not sorted again (about 0.03 s less at 1e6 points).
-template <class DT, class PointIterator>
-void build_from_scratch(DT& dt, PointIterator points, std::size_t n, Statistics& stats,
-                        const std::vector<std::uint32_t>& grid_order = std::vector<std::uint32_t>())
-{
-  const bool in_order = grid_order.size() == n;
-  std::vector<std::size_t> indices(n);
-  for(std::size_t i = 0; i < n; ++i)
-    indices[i] = in_order ? grid_order[i] : i;
-  if(in_order)
-    deal_into_rounds(indices);
-  insert_points(dt, points, indices, stats, nullptr, in_order);
-}
-
 // Copies the faces of the Delaunay triangulation `aside` into the TDS of `tr`, whose faces
 // are dropped: `vertex_of(aside vertex)` gives the vertex of `tr` for each vertex of `aside`
 // (the infinite one included). A face of dimension d has max(1, d + 1) vertex slots and
@@ -137,8 +121,8 @@ using Deciding_tds = Triangulation_data_structure_2<Triangulation_vertex_base_wi
 using Deciding_dt = Delaunay_triangulation_2<Deciding_gt, Deciding_tds>;
 
 // The Delaunay triangulation of points[0, n) by exact predicates on their coordinates rounded
-// to double, built into `aside` by the package's insertion; every vertex's info() is the index
-// of its first point, and `on_duplicate(i, j)` is called for a point i equal to the point j of
+// to double, built into `aside` by the package's insertion; every vertex's info() is the
+// smallest index of its point, and `on_duplicate(i, j)` is called for a point i equal to the point j of
 // a vertex (before anything else happens to it). (CGAL's own insertion with inexact
 // predicates, tried first, lost points, left invalid triangulations and crashed on almost
 // collinear points: it cannot be relied on.) Returns the vertex of each point.
@@ -156,59 +140,14 @@ std::vector<Deciding_dt::Vertex_handle> build_deciding(Deciding_dt& aside, Point
   std::vector<Deciding_dt::Vertex_handle> vertex(n);
   insert_by_index(aside, rounded.begin(), indices, [&](std::size_t i, auto v, bool is_new) {
     vertex[i] = v;
-    if(is_new)
+    if(is_new) {
       v->info() = i;
-    else
+    } else {
       on_duplicate(i, v->info());
+      v->info() = (std::min)(v->info(), i); // the smallest index of the point
+    }
   });
   return vertex;
-}
-
-// After a transplant of faces decided by exact predicates, for traits whose predicates are
-// not exact: flips the edges that the traits' own in-circle test finds not locally Delaunay,
-// where the traits' orientation finds both new faces counterclockwise, so that the result
-// passes the traits' is_valid() where they disagree with exact predicates on nearly
-// co-circular points. At most 4n + 64 flips: it terminates whatever the predicates say.
-template <class Triangulation>
-void settle_with_traits(Triangulation& tr)
-{
-  using Face_handle = typename Triangulation::Face_handle;
-  if(tr.dimension() != 2)
-    return;
-  const auto& gt = tr.geom_traits();
-  auto orientation = gt.orientation_2_object();
-  auto in_circle = gt.side_of_oriented_circle_2_object();
-  std::vector<std::pair<Face_handle, int>> stack;
-  for(auto f = tr.finite_faces_begin(); f != tr.finite_faces_end(); ++f)
-    for(int i = 0; i < 3; ++i)
-      stack.emplace_back(f, i);
-  std::size_t budget = 4 * tr.number_of_vertices() + 64;
-  while(!stack.empty() && budget > 0) {
-    const Face_handle f = stack.back().first;
-    const int i = stack.back().second;
-    stack.pop_back();
-    const Face_handle g = f->neighbor(i);
-    if(tr.is_infinite(f) || tr.is_infinite(g))
-      continue;
-    const int j = tr.mirror_index(f, i);
-    // In the vertex order of the faces, as is_valid() evaluates them.
-    auto ccw_face = [&](Face_handle h) {
-      return orientation(h->vertex(0)->point(), h->vertex(1)->point(), h->vertex(2)->point()) == LEFT_TURN;
-    };
-    if(in_circle(f->vertex(0)->point(), f->vertex(1)->point(), f->vertex(2)->point(), g->vertex(j)->point()) !=
-       ON_POSITIVE_SIDE)
-      continue;
-    tr.tds().flip(f, i);
-    --budget;
-    if(!ccw_face(f) || !ccw_face(g)) { // not convex for the traits: undone
-      tr.tds().flip(f, f->index(g));
-      continue;
-    }
-    for(int k = 0; k < 3; ++k) {
-      stack.emplace_back(f, k);
-      stack.emplace_back(g, k);
-    }
-  }
 }
 
 // For traits whose predicates are not exact (exact_predicates.h), where the package's flips
@@ -235,25 +174,46 @@ void insert_with_exact_predicates(DT& dt, PointIterator points, std::size_t n, O
   transplant(aside, dt, [&](Deciding_dt::Vertex_handle v) {
     return v == aside.infinite_vertex() ? dt.infinite_vertex() : vertex[v->info()];
   });
-  settle_with_traits(dt);
   for(std::size_t i = 0; i < n; ++i) {
     const std::size_t first = at[i]->info();
     on_vertex(i, vertex[first], first == i);
   }
 }
 
-// The whole build of an entry point for traits whose predicates are not exact: points[0, n)
-// into `dt` by insert_with_exact_predicates(), info() set to the point index (the smallest
-// among duplicates), recorded in `stats` as a fallback.
+// Builds DT(points) from scratch into `dt`, which holds no vertex. `grid_order`, if not
+// empty, lists all the indices in grid order (the import had sorted them so): they
+// are only dealt into rounds, not sorted again (about 0.03 s less at 1e6 points). With
+// traits whose predicates are not exact, by insert_with_exact_predicates().
+template <class DT, class PointIterator>
+void build_from_scratch(DT& dt, PointIterator points, std::size_t n, Statistics& stats,
+                        const std::vector<std::uint32_t>& grid_order = std::vector<std::uint32_t>())
+{
+  if constexpr(decides_by_exact_predicates<typename DT::Geom_traits>::value) {
+    insert_with_exact_predicates(dt, points, n, [&](std::size_t i, auto v, bool is_new) {
+      record_index_info(v, i, is_new, stats.duplicate_points);
+    });
+    stats.points_reinserted += n;
+    return;
+  }
+  const bool in_order = grid_order.size() == n;
+  std::vector<std::size_t> indices(n);
+  for(std::size_t i = 0; i < n; ++i)
+    indices[i] = in_order ? grid_order[i] : i;
+  if(in_order)
+    deal_into_rounds(indices);
+  insert_points(dt, points, indices, stats, nullptr, in_order);
+}
+
+// The whole build of an entry point for traits whose predicates are not exact:
+// build_from_scratch(), recorded in `stats` as a fallback.
 template <class DT, class PointIterator>
 void build_with_exact_predicates(DT& dt, PointIterator points, std::size_t n, Statistics& stats)
 {
-  insert_with_exact_predicates(dt, points, n, [&](std::size_t i, auto v, bool is_new) {
-    record_index_info(v, i, is_new, stats.duplicate_points);
-  });
+  static_assert(decides_by_exact_predicates<typename DT::Geom_traits>::value);
+  build_from_scratch(dt, points, n, stats);
+  stats.points_reinserted = n;
   stats.fell_back = true;
   stats.fallback_reason = inexact_predicates;
-  stats.points_reinserted = n;
 }
 
 // Replaces the faces of `tr` by those of DT(its vertices), keeping every vertex object (so
@@ -294,7 +254,7 @@ void rebuild_keeping_vertices(Triangulation& tr, Statistics& stats)
   std::vector<std::size_t> indices(n);
   for(std::size_t i = 0; i < n; ++i)
     indices[i] = i;
-  if constexpr(!has_exact_predicates<Gt>::value) {
+  if constexpr(decides_by_exact_predicates<Gt>::value) {
     // Duplicates by the traits' exact comparison of coordinates, before any insertion, not
     // by what an inexact insertion happens to do.
     auto compare_xy = tr.geom_traits().compare_xy_2_object();
@@ -309,7 +269,7 @@ void rebuild_keeping_vertices(Triangulation& tr, Statistics& stats)
       indices[i] = i;
   }
   stats.points_reinserted += n;
-  if constexpr(!has_exact_predicates<Gt>::value) {
+  if constexpr(decides_by_exact_predicates<Gt>::value) {
     // Faces decided by exact predicates (build_deciding()): the same vertex objects, none lost.
     (void)aside;
     Deciding_dt exact;
@@ -317,7 +277,6 @@ void rebuild_keeping_vertices(Triangulation& tr, Statistics& stats)
     transplant(exact, tr, [&](Deciding_dt::Vertex_handle v) {
       return v == exact.infinite_vertex() ? tr.infinite_vertex() : vertices[v->info()];
     });
-    settle_with_traits(tr);
   } else {
     insert_by_index(aside, points.begin(), indices, [&](std::size_t i, auto v, bool is_new) {
       if(is_new) {
