@@ -10,7 +10,8 @@
 #              tests still run in seconds), DFP_SANITIZE_EXAMPLES=ON (build and run the
 #              examples too; off by default to keep CI short), DFP_SANITIZE_TIMEOUT (per
 #              test, seconds; default 900), DFP_FUZZ_CASES (cases of the differential fuzzer;
-#              default 500).
+#              default 500), DFP_SANITIZE_TESTS (test programs to build and run, separated
+#              by spaces, e.g. "test_fuzz_differential test_reliability"; default: all of them).
 set -euo pipefail
 
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
@@ -25,7 +26,15 @@ cmake -S . -B build-sanitize -DCMAKE_BUILD_TYPE=Debug \
   -DDFP_BUILD_EXAMPLES="${DFP_SANITIZE_EXAMPLES:-OFF}" \
   -DDFP_BUILD_BENCHMARKS=OFF \
   -DCGAL_DO_NOT_WARN_ABOUT_CMAKE_BUILD_TYPE=TRUE
-cmake --build build-sanitize -j2
+tests=${DFP_SANITIZE_TESTS:-}
+if [ -n "$tests" ]; then
+  # shellcheck disable=SC2086 # one target per word
+  cmake --build build-sanitize -j2 --target $tests
+  only="^(compilation_of__|execution___of__)($(echo $tests | tr ' ' '|'))\$"
+else
+  cmake --build build-sanitize -j2
+  only=""
+fi
 
 supp="$PWD/scripts/sanitizers"
 export ASAN_OPTIONS="detect_leaks=1:abort_on_error=1:strict_string_checks=1:detect_stack_use_after_return=1:check_initialization_order=1:strict_init_order=1${ASAN_OPTIONS:+:$ASAN_OPTIONS}"
@@ -37,4 +46,4 @@ export LSAN_OPTIONS="suppressions=$supp/lsan.supp:print_suppressions=0${LSAN_OPT
 export DFP_FUZZ_CASES="${DFP_FUZZ_CASES:-500}"
 
 cd build-sanitize
-ctest --output-on-failure -j2 --timeout "${DFP_SANITIZE_TIMEOUT:-900}"
+ctest --output-on-failure -j2 --timeout "${DFP_SANITIZE_TIMEOUT:-900}" ${only:+-R "$only"}

@@ -229,12 +229,22 @@ DFP::Statistics with_mode(Mode m, const F& body)
   }
 }
 
-// Runs `body` in a forked child killed after `seconds` (an endless loop is a failure too); its
-// failures are counted here, a crash or a time-out reported as one. Where fork() is not
-// available, runs it here.
+// How much slower this build runs than an optimized one, for time limits: unoptimized or
+// sanitized code (scripts/sanitize.sh: -O0 with ASan and UBSan) runs up to about 20 times slower.
+constexpr unsigned time_limit_scale =
+#if !defined(__OPTIMIZE__) || defined(__SANITIZE_ADDRESS__)
+    20;
+#else
+    1;
+#endif
+
+// Runs `body` in a forked child killed after `seconds` (times time_limit_scale: an endless
+// loop is a failure too); its failures are counted here, a crash or a time-out reported as
+// one. Where fork() is not available, runs it here.
 template <class F>
 void isolated(const std::string& what, const F& body, unsigned seconds = 120)
 {
+  seconds *= time_limit_scale;
 #if defined(__unix__) || defined(__APPLE__)
   std::cout.flush();
   std::cerr.flush();
