@@ -209,6 +209,9 @@ struct Shared
   long long by_points[P_COUNT][2];
   long long by_pred[F_COUNT][2];
   long long by_kernel[K_COUNT][2];
+  // Simple_cartesian<double> results (exact, as the oracle checks) that the kernel's own
+  // inexact is_valid() rejects, for information: not a failure (see the manual, Inexact kernels).
+  long long inexact_checked, inexact_not_valid;
   int signatures;
   Signature signature[256];
 };
