@@ -25,10 +25,9 @@
 #include <CGAL/Delaunay_from_prediction/parameters.h>
 #include <CGAL/Delaunay_from_prediction/internal/carve_repair.h>
 #include <CGAL/Delaunay_from_prediction/internal/hierarchy.h>
-#include <CGAL/Delaunay_from_prediction/internal/hull_repair.h>
 #include <CGAL/Delaunay_from_prediction/internal/import_prediction.h>
 #include <CGAL/Delaunay_from_prediction/internal/input_check.h>
-#include <CGAL/Delaunay_from_prediction/internal/lawson_flip.h>
+#include <CGAL/Delaunay_from_prediction/internal/flips.h>
 #include <CGAL/Delaunay_from_prediction/internal/rebuild.h>
 #include <CGAL/Delaunay_from_prediction/internal/region_repair.h>
 #include <CGAL/Delaunay_from_prediction/internal/sort_addresses.h>

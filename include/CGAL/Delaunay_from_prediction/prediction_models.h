@@ -17,7 +17,7 @@
 #define CGAL_DELAUNAY_FROM_PREDICTION_PREDICTION_MODELS_H
 
 #include <CGAL/Delaunay_from_prediction/measures.h>
-#include <CGAL/Delaunay_from_prediction/internal/lawson_flip.h>
+#include <CGAL/Delaunay_from_prediction/internal/flips.h>
 #include <CGAL/Delaunay_from_prediction/internal/random.h>
 #include <CGAL/Delaunay_from_prediction/internal/rebuild.h>
 #include <CGAL/Delaunay_from_prediction/internal/spatial_order.h>
@@ -288,7 +288,7 @@ rho_model_prediction(const PointRange& points, double rho, std::uint64_t seed,
       if(edges.draw(random, f, i) && !is_kept(f, i))
         internal::flip_if_convex(dt, f, i);
   } else {
-    // The flip loop of lawson_flip.h, flipping the other way: locally Delaunay edges not in R.
+    // The flip loop of flips.h, flipping the other way: locally Delaunay edges not in R.
     const auto& gt = dt.geom_traits();
     std::vector<std::pair<Face_handle, int>> stack;
     for(auto f = dt.finite_faces_begin(); f != dt.finite_faces_end(); ++f)

@@ -4,7 +4,7 @@
 //
 // Local repair of a prediction that is not a triangulation (Appendix A of the paper, in the
 // practical form this package uses): carve out what is geometrically wrong, retriangulate the
-// holes, reinsert the vertices left without a face, and let Lawson's flips (lawson_flip.h)
+// holes, reinsert the vertices left without a face, and let Lawson's flips (flips.h)
 // finish. Used by make_delaunay (inverted or flat faces after moves, in place, vertex objects
 // kept) and by delaunay_from_prediction (holes, repeated, overlapping or degenerate faces,
 // missing hull faces: the importer hands over the faces it could pair, with open half-edges).
@@ -13,7 +13,7 @@
 // carves the star of every vertex of a face that is not, and the importer never creates one.
 // Each hole, a cycle of open half-edges of the kept faces, is filled by ear clipping with
 // counterclockwise ears only, and the outer cycle is closed with infinite faces and made
-// convex by hull flips that add counterclockwise faces (hull_repair.h). Then every finite
+// convex by hull flips that add counterclockwise faces (flips.h). Then every finite
 // face is counterclockwise and the hull is checked to be a convex polygon wound once; by the
 // winding-number argument of import_prediction.h the faces tile the hull exactly once: a
 // triangulation of its vertices, whatever the holes looked like. If the final check fails,
@@ -33,7 +33,9 @@
 #define CGAL_DELAUNAY_FROM_PREDICTION_INTERNAL_CARVE_REPAIR_H
 
 #include <CGAL/Delaunay_from_prediction/internal/ear_clipping.h>
-#include <CGAL/Delaunay_from_prediction/internal/hull_repair.h>
+#include <CGAL/Delaunay_from_prediction/internal/hash_map.h>
+#include <CGAL/Delaunay_from_prediction/internal/flips.h>
+#include <CGAL/Delaunay_from_prediction/internal/insertion.h>
 #include <CGAL/Delaunay_from_prediction/internal/predicates.h>
 #include <CGAL/Delaunay_from_prediction/internal/sort_addresses.h>
 #include <CGAL/Delaunay_from_prediction/internal/spatial_order.h>
@@ -57,230 +59,19 @@ namespace CGAL {
 namespace Delaunay_from_prediction {
 namespace internal {
 
-// Untangling by flips, before any carving (make_delaunay). A face inverted by small moves is
-// most often a vertex a that crossed the opposite edge (b, c) into the neighbour (c, b, d):
-// then a lies inside that neighbour, and flipping (b, c) to (a, d) gives two faces that are
-// both counterclockwise. Each bad face whose flip does that is flipped (the neighbour is
-// finite, the new edge not already there); the faces still bad afterwards are returned in
-// `bad`. The flips are combinatorial: nothing here assumes the faces tile the plane; the
-// certificate stays the one at the top of this file (every face ccw, hull convex and wound
-// once). Each flip made is logged, so undo_flips() can restore `tr`.
-template <class Triangulation>
-void untangle_by_flips(Triangulation& tr, std::vector<typename Triangulation::Face_handle>& bad,
-                       std::vector<std::pair<typename Triangulation::Face_handle, int>>& stack,
-                       Flip_log<Triangulation>& log,
-                       std::vector<typename Triangulation::Face_handle>& touched)
-{
-  using Face_handle = typename Triangulation::Face_handle;
-  auto orientation = tr.geom_traits().orientation_2_object();
-  auto& tds = tr.tds();
-  const auto infinite = tr.infinite_vertex();
-  auto is_ccw = [&](Face_handle f) {
-    return orientation(f->vertex(0)->point(), f->vertex(1)->point(), f->vertex(2)->point()) == LEFT_TURN;
-  };
-  for(std::size_t k = 0; k < bad.size(); ++k) {
-    const Face_handle f = bad[k];
-#if defined(__GNUC__)
-    if(k + 8 < bad.size()) // the faces are far apart: fetch the neighbourhood of one ahead
-      for(int i = 0; i < 3; ++i) {
-        __builtin_prefetch(bad[k + 8]->vertex(i).operator->());
-        __builtin_prefetch(bad[k + 8]->neighbor(i).operator->());
-      }
-#endif
-    if(is_ccw(f))
-      continue; // made ccw by an earlier flip
-    for(int i = 0; i < 3; ++i) {
-      const Face_handle g = f->neighbor(i);
-      if(g->has_vertex(infinite))
-        continue;
-      const auto a = f->vertex(i), b = f->vertex(ccw(i)), c = f->vertex(cw(i));
-      const auto d = g->vertex(tds.mirror_index(f, i));
-      if(orientation(a->point(), b->point(), d->point()) != LEFT_TURN ||
-         orientation(a->point(), d->point(), c->point()) != LEFT_TURN || tds.is_edge(a, d))
-        continue;
-      tds.flip(f, i); // f = (a, b, d), g = (d, c, a): see lawson_flip.h
-      log.emplace_back(f, i);
-      touched.push_back(f);
-      touched.push_back(g);
-      for(int k = 0; k < 3; ++k) {
-        stack.emplace_back(f, k);
-        stack.emplace_back(g, k);
-      }
-      break;
-    }
-  }
-  bad.erase(std::remove_if(bad.begin(), bad.end(), is_ccw), bad.end());
-  std::sort(bad.begin(), bad.end());
-  bad.erase(std::unique(bad.begin(), bad.end()), bad.end());
-}
-
-// Undoes the logged flips (certification's, untangle_by_flips()'s), latest first.
-template <class Triangulation>
-void undo_flips(Triangulation& tr, Flip_log<Triangulation>& log)
-{
-  for(auto it = log.rbegin(); it != log.rend(); ++it)
-    undo_flip(tr.tds(), it->first, it->second);
-  log.clear();
-}
-
-// Inserts `vertices` (vertex objects with no face) into the valid triangulation `tr`, keeping
-// each object, so that handles and info() survive: CGAL's location and insertion of the
-// triangulation base class (no flips), then the vertex object insertion made is replaced by
-// the old one in its faces. In a grid order, each located from the last, or from the face of
-// `(*near)[k]` for vertices[k] when that is a vertex with a face (a former neighbour: a walk
-// of a face or two instead of the ten or so between grid neighbours). The edges around
-// each go on `stack` (Lawson's algorithm makes them Delaunay). `on_hit(f)` is called for the
-// faces insertion destroys or splits, `on_created(f)` for the faces around each reinserted
-// vertex, `on_duplicate(v, w)` instead of inserting v when its point is already vertex w's.
-template <class Triangulation, class OnHit, class OnCreated, class OnDuplicate>
-void reinsert_vertex_objects(Triangulation& tr, const std::vector<typename Triangulation::Vertex_handle>& vertices,
-                             std::vector<std::pair<typename Triangulation::Face_handle, int>>& stack,
-                             OnHit on_hit, OnCreated on_created, OnDuplicate on_duplicate,
-                             const std::vector<typename Triangulation::Vertex_handle>* near = nullptr)
-{
-  using Base = Triangulation_2<typename Triangulation::Geom_traits, typename Triangulation::Triangulation_data_structure>;
-  using Vertex_handle = typename Triangulation::Vertex_handle;
-  using Face_handle = typename Triangulation::Face_handle;
-  using Point = typename Triangulation::Point;
-  Base& base = static_cast<Base&>(tr);
-  std::vector<std::size_t> order(vertices.size());
-  for(std::size_t k = 0; k < order.size(); ++k)
-    order[k] = k;
-  sort_along_grid(order, [&](std::size_t k) -> const Point& { return vertices[k]->point(); }, false);
-  Face_handle hint = tr.infinite_vertex()->face();
-  const Point* previous = nullptr; // the point inserted last, at `hint`
-  // Only to choose where a walk starts. Halves and hypot: no overflow near 1e308, no
-  // underflow to 0 near the smallest normal double.
-  auto distance = [](const Point& a, const Point& b) {
-    return std::hypot(CGAL::to_double(a.x()) / 2 - CGAL::to_double(b.x()) / 2,
-                      CGAL::to_double(a.y()) / 2 - CGAL::to_double(b.y()) / 2);
-  };
-  for(const std::size_t k : order) {
-    const Vertex_handle v = vertices[k];
-    typename Base::Locate_type lt;
-    int li = 0;
-    // The vertex near v in the prediction is the better start, unless the prediction put v
-    // far from where it is (a relabelled point: its neighbours in the prediction are
-    // anywhere); then the last point inserted, before it in grid order, is nearer. With 0.3%
-    // of the points of 1e6 relabelled, walks from those neighbours took a third of the call.
-    if(near != nullptr && (*near)[k] != Vertex_handle() && (*near)[k]->face() != Face_handle() &&
-       (previous == nullptr ||
-        distance((*near)[k]->point(), v->point()) < distance(*previous, v->point())))
-      hint = (*near)[k]->face();
-    const Face_handle loc = base.locate(v->point(), lt, li, hint);
-    if(lt == Base::VERTEX) {
-      on_duplicate(v, loc->vertex(li));
-      continue;
-    }
-    on_hit(loc);
-    if(lt == Base::EDGE)
-      on_hit(loc->neighbor(li));
-    const Vertex_handle fresh = base.insert(v->point(), lt, loc, li);
-    // Transplant: v takes the place of the vertex insertion made.
-    Face_handle f = fresh->face();
-    const Face_handle first = f;
-    do {
-      const int i = f->index(fresh);
-      f->set_vertex(i, v);
-      on_created(f);
-      stack.emplace_back(f, i);
-      stack.emplace_back(f, cw(i));
-      f = f->neighbor(ccw(i));
-    } while(f != first);
-    v->set_face(first);
-    tr.tds().delete_vertex(fresh);
-    hint = first;
-    previous = &v->point();
-  }
-}
-
-// Open-addressing hash table keyed by object addresses (never null), with a value per key.
-// Grows by doubling; no deletion (the carve only ever adds).
-template <class Value>
-class Address_table
-{
-public:
-  Address_table() { resize(64); }
-
-  // Inserts `key` with `value` if absent; returns a pointer to the stored value and whether
-  // it was inserted.
-  std::pair<Value*, bool> insert(const void* key, const Value& value)
-  {
-    if(2 * (size_ + 1) > keys_.size())
-      resize(2 * keys_.size());
-    std::size_t i = home(key);
-    for(; keys_[i] != nullptr; i = (i + 1) & mask_)
-      if(keys_[i] == key)
-        return {&values_[i], false};
-    keys_[i] = key;
-    values_[i] = value;
-    ++size_;
-    return {&values_[i], true};
-  }
-
-  const Value* find(const void* key) const
-  {
-    for(std::size_t i = home(key); keys_[i] != nullptr; i = (i + 1) & mask_)
-      if(keys_[i] == key)
-        return &values_[i];
-    return nullptr;
-  }
-
-  bool contains(const void* key) const { return find(key) != nullptr; }
-
-  // Makes room for `count` keys in all without growing (each growth rehashes every key).
-  void reserve(std::size_t count)
-  {
-    std::size_t capacity = keys_.size();
-    while(2 * count > capacity)
-      capacity *= 2;
-    if(capacity > keys_.size())
-      resize(capacity);
-  }
-  std::size_t size() const { return size_; }
-
-  void clear()
-  {
-    std::fill(keys_.begin(), keys_.end(), nullptr);
-    size_ = 0;
-  }
-
-private:
-  std::size_t home(const void* key) const
-  {
-    return std::size_t((std::uint64_t(reinterpret_cast<std::uintptr_t>(key)) * 0x9E3779B97F4A7C15ull) >>
-                       shift_);
-  }
-  void resize(std::size_t capacity)
-  {
-    std::vector<const void*> old_keys(capacity, nullptr);
-    std::vector<Value> old_values(capacity);
-    old_keys.swap(keys_);
-    old_values.swap(values_);
-    mask_ = capacity - 1;
-    shift_ = 64;
-    for(std::size_t c = capacity; c > 1; c >>= 1)
-      --shift_;
-    size_ = 0;
-    for(std::size_t k = 0; k < old_keys.size(); ++k)
-      if(old_keys[k] != nullptr)
-        insert(old_keys[k], old_values[k]);
-  }
-
-  std::vector<const void*> keys_;
-  std::vector<Value> values_;
-  std::size_t mask_ = 0, size_ = 0;
-  int shift_ = 64;
-};
-
 // Limits of the local repair; past them the caller rebuilds (a damage that large is cheaper
 // to rebuild, and the ear clipping is quadratic in a hole's size).
 struct Carve_limits
 {
   std::size_t max_removed_faces = 0; // faces carved in all
   std::size_t max_bad_faces = 0;     // faces found wrong before any carving
-  std::size_t max_rounds = 24;       // rounds of widening holes that cannot be filled
-  std::size_t max_hole_size = 1024;  // boundary edges of one hole
+  // Rounds of widening the holes that cannot be filled, each by a ring of stars. The face
+  // budget above bounds the work; this bounds the passes, so that a hole that keeps failing
+  // is given up after 24 rings instead of the whole budget in small steps.
+  std::size_t max_rounds = 24;
+  // Boundary edges of one hole: the ear clipping is quadratic in it. The pairing of
+  // diagonals in commit() needs fewer than 2^32.
+  std::size_t max_hole_size = 1024;
 };
 
 template <class Triangulation>
@@ -378,7 +169,7 @@ public:
       low = (std::min)(low, Bitmap::value(&*f));
       high = (std::max)(high, Bitmap::value(&*f));
     }
-    if(stack.size() > 4096 && Bitmap::fits(low, high, removed_list_.size() + stack.size())) {
+    if(stack.size() > long_stack && Bitmap::fits(low, high, removed_list_.size() + stack.size())) {
       // Kept for is_removed(), asked about every face flipped before the carve.
       carved_bitmap_.reset(new Bitmap(low, high));
       for(const Face_handle f : removed_list_)
@@ -409,8 +200,10 @@ public:
     // `linked` marks the open half-edges that get a neighbour: all of them, when the plan is
     // complete (every live loop filled, paired, or the outer one).
     std::vector<char> linked(open_.size(), 0);
-    std::vector<std::pair<std::uint64_t, Edge>> diagonals;
-    for(const Loop& loop : loops_) {
+    // (the loop, the diagonal's ends in it) -> the ear's edge on it
+    std::vector<std::pair<std::pair<std::size_t, std::uint64_t>, Edge>> diagonals;
+    for(std::size_t l = 0; l < loops_.size(); ++l) {
+      const Loop& loop = loops_[l];
       if(loop.dead)
         continue;
       if(loop.halfedges.size() == 2) { // two kept faces on one edge, not linked (importer only)
@@ -432,7 +225,7 @@ public:
             tds_.set_adjacency(f, i, e.first, e.second);
             linked[ear.open[i]] = 1;
           } else {
-            diagonals.emplace_back(ear.diagonal[i], Edge(f, i));
+            diagonals.emplace_back(std::make_pair(l, ear.diagonal[i]), Edge(f, i));
           }
         }
       }
@@ -545,12 +338,19 @@ public:
 private:
   static constexpr std::size_t none = std::size_t(-1);
   static constexpr std::size_t unknown = std::size_t(-2);
+  // A turn around a vertex through more faces than this is taken for a broken fan: the hole
+  // is widened (a vertex of that degree, such as the centre of 2^16 co-circular points, then
+  // costs a rebuild, never a wrong result).
+  static constexpr std::size_t longest_fan = std::size_t(1) << 16;
+  // A stack of failing edges longer than this is filtered through a bitmap of the carved
+  // faces (commit()); a shorter one is filtered through the hash table as cheaply.
+  static constexpr std::size_t long_stack = 4096;
 
   struct Ear
   {
     Vertex_handle v[3];
     std::size_t open[3];         // index into open_ of the polygon edge opposite v[i], or none
-    std::uint64_t diagonal[3];   // else a key shared by the two ears on that diagonal
+    std::uint64_t diagonal[3];   // else its ends in the hole, shared by the two ears on it
   };
   struct Loop
   {
@@ -819,17 +619,12 @@ private:
     }
     const std::size_t side = (std::max)(std::size_t(1), std::size_t(std::sqrt(double(m))));
     // Boxes widened by far more than the rounding of to_double (relative to the coordinates,
-    // plus the smallest subnormal); cells as the fraction (v - lo) / (hi - lo) of halves, which
-    // neither overflows (coordinates near +-1e308) nor makes a scale overflow (boxes near the
-    // smallest normal double). Only which pairs are tested depends on this: a pair that meets
-    // shares a cell, the tests are exact.
+    // plus the smallest subnormal); cells by Grid_axis, finite at any scale. Only which pairs
+    // are tested depends on this: a pair that meets shares a cell, the tests are exact.
     const double largest = (std::max)((std::max)(std::fabs(xmin), std::fabs(xmax)), (std::max)(std::fabs(ymin), std::fabs(ymax)));
     const double margin = 1e-9 * (xmax / 2 - xmin / 2 + ymax / 2 - ymin / 2) + 1e-15 * largest +
                           std::numeric_limits<double>::denorm_min();
-    auto cell = [&](double v, double lo, double hi) {
-      const double c = (v / 2 - lo / 2) / (hi / 2 - lo / 2) * double(side);
-      return !(c > 0) ? std::size_t(0) : !(c < double(side - 1)) ? side - 1 : std::size_t(c);
-    };
+    const Grid_axis column(xmin, xmax, side), row(ymin, ymax, side);
     std::vector<std::vector<std::size_t>> grid(side * side);
     for(std::size_t k = 0; k < m; ++k) {
       const Point& a = *p[k];
@@ -838,8 +633,8 @@ private:
       const double x1 = (std::max)(CGAL::to_double(a.x()), CGAL::to_double(b.x())) + margin;
       const double y0 = (std::min)(CGAL::to_double(a.y()), CGAL::to_double(b.y())) - margin;
       const double y1 = (std::max)(CGAL::to_double(a.y()), CGAL::to_double(b.y())) + margin;
-      for(std::size_t cx = cell(x0, xmin, xmax); cx <= cell(x1, xmin, xmax); ++cx)
-        for(std::size_t cy = cell(y0, ymin, ymax); cy <= cell(y1, ymin, ymax); ++cy)
+      for(std::size_t cx = column(x0); cx <= column(x1); ++cx)
+        for(std::size_t cy = row(y0); cy <= row(y1); ++cy)
           grid[cy * side + cx].push_back(k);
     }
     // Closed segments [a, b] and [c, d] meet.
@@ -946,7 +741,7 @@ private:
   {
     Face_handle f = open_[k].first;
     const Vertex_handle v = f->vertex(cw(open_[k].second));
-    for(int steps = 0; steps < 1 << 16; ++steps) {
+    for(std::size_t steps = 0; steps < longest_fan; ++steps) {
       const int out = cw(f->index(v)); // the half-edge of f leaving v
       if(is_open(f, out)) {
         const std::size_t* at = position_.find(halfedge_key(Edge(f, out)));
@@ -1051,7 +846,7 @@ private:
     for(const auto& t : cut) {
       // Ear (a, b, c) in vertex slots 0, 1, 2; the edge opposite slot i runs from ends[i][0]
       // to ends[i][1]: a polygon edge (paired with its open half-edge) or a diagonal (paired
-      // with the other ear on it through a key unique to this hole).
+      // with the other ear on it through its ends, unique in this hole).
       Ear e;
       const std::size_t ends[3][2] = {{t[1], t[2]}, {t[2], t[0]}, {t[0], t[1]}};
       for(int i = 0; i < 3; ++i) {
@@ -1059,11 +854,10 @@ private:
         const std::size_t from = ends[i][0], to = ends[i][1];
         e.open[i] = (from + 1) % m == to ? edge_after[from] : none;
         const std::uint64_t lo = (std::min)(from, to), hi = (std::max)(from, to);
-        e.diagonal[i] = (std::uint64_t(diagonal_base_) << 40) ^ (lo << 20) ^ hi;
+        e.diagonal[i] = lo << 32 | hi;
       }
       ears.push_back(e);
     }
-    ++diagonal_base_;
     return true;
   }
 
@@ -1142,7 +936,7 @@ private:
   const Vertex_handle infinite_;
   const bool keep_undo_log_;
   bool outer_open_ = false, committed_ = false, may_have_several_fans_ = false, complete_ = true;
-  std::size_t rounds_ = 0, removed_finite_ = 0, diagonal_base_ = 0, outer_ = none, groups_ = 0, traced_ = 0;
+  std::size_t rounds_ = 0, removed_finite_ = 0, outer_ = none, groups_ = 0, traced_ = 0;
 
   Address_table<std::size_t> removed_;   // carved face -> position in removed_list_
   std::unique_ptr<Slot_bitmap<typename Tds::Face>> carved_bitmap_; // the same set, from commit() on
@@ -1181,6 +975,11 @@ private:
 // exactly as in is_convex_ccw_cycle(). A vertex whose closed fan winds more than once has
 // faces covering its neighbourhood twice: its star is carved. One pass over the vertices,
 // about two orientation and coordinate tests per face.
+// Fans of more faces are not followed (taken as open): a vertex of higher degree is never
+// carved for winding twice. No result depends on it: faces that overlap there fail the final
+// check, and the caller rebuilds.
+constexpr std::size_t wound_twice_max_degree = 4096;
+
 template <class Triangulation>
 void carve_vertices_wound_twice(const Triangulation& tr, Carve_repair<Triangulation>& carve)
 {
@@ -1206,7 +1005,7 @@ void carve_vertices_wound_twice(const Triangulation& tr, Carve_repair<Triangulat
       if(!upper(f->vertex(ccw(i))->point()) && upper(f->vertex(cw(i))->point()))
         ++wraps;
       f = f->neighbor(ccw(i));
-      if(f == Face_handle() || ++steps > 4096) {
+      if(f == Face_handle() || ++steps > wound_twice_max_degree) {
         closed = false;
         break;
       }

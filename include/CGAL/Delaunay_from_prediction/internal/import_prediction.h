@@ -21,6 +21,7 @@
 #define CGAL_DELAUNAY_FROM_PREDICTION_INTERNAL_IMPORT_PREDICTION_H
 
 #include <CGAL/Delaunay_from_prediction/internal/ear_clipping.h>
+#include <CGAL/Delaunay_from_prediction/internal/hash_map.h>
 #include <CGAL/Delaunay_from_prediction/internal/input_check.h>
 #include <CGAL/Delaunay_from_prediction/internal/predicates.h>
 #include <CGAL/Delaunay_from_prediction/internal/random.h>
@@ -134,104 +135,11 @@ struct Imported_prediction
   const char* failure = nullptr; // why the faces are not a triangulation; null if they are
 };
 
-// Overflow store of open half-edges: a linear-probing hash table keyed by the undirected
-// edge (smaller index, larger index), with backward-shift deletion so that it never fills
-// with tombstones. Grows by doubling.
-class Open_halfedge_table
-{
-public:
-  static constexpr std::uint64_t empty = (std::numeric_limits<std::uint64_t>::max)();
-
-  Open_halfedge_table() { resize(1u << 8); }
-
-  static std::uint64_t edge_key(std::uint32_t smaller, std::uint32_t larger)
-  {
-    return std::uint64_t(smaller) << 32 | larger;
-  }
-
-  void insert(std::uint64_t edge, std::uintptr_t code)
-  {
-    if(2 * (size_ + 1) > slots_.size())
-      resize(2 * slots_.size());
-    std::size_t i = home(edge);
-    while(slots_[i].edge != empty)
-      i = (i + 1) & mask_;
-    slots_[i] = Slot{edge, code};
-    ++size_;
-  }
-
-  // Removes `edge` if present and returns true with its code.
-  bool take(std::uint64_t edge, std::uintptr_t& code)
-  {
-    if(size_ == 0)
-      return false;
-    std::size_t i = home(edge);
-    for(; slots_[i].edge != edge; i = (i + 1) & mask_)
-      if(slots_[i].edge == empty)
-        return false;
-    code = slots_[i].code;
-    // Backward shift: move each following entry into the hole unless its home lies
-    // cyclically in (hole, entry].
-    for(std::size_t j = i;;) {
-      j = (j + 1) & mask_;
-      if(slots_[j].edge == empty)
-        break;
-      const std::size_t k = home(slots_[j].edge);
-      const bool stays = (i <= j) ? (i < k && k <= j) : (i < k || k <= j);
-      if(!stays) {
-        slots_[i] = slots_[j];
-        i = j;
-      }
-    }
-    slots_[i].edge = empty;
-    --size_;
-    return true;
-  }
-
-  std::size_t size() const { return size_; }
-
-  template <class Visit> // visit(smaller, larger, code)
-  void for_each(Visit visit) const
-  {
-    for(const Slot& s : slots_)
-      if(s.edge != empty)
-        visit(std::uint32_t(s.edge >> 32), std::uint32_t(s.edge), s.code);
-  }
-
-private:
-  struct Slot
-  {
-    std::uint64_t edge;
-    std::uintptr_t code;
-  };
-  std::size_t home(std::uint64_t edge) const
-  {
-    return std::size_t((edge * 0x9E3779B97F4A7C15ull) >> shift_);
-  }
-  void resize(std::size_t capacity)
-  {
-    std::vector<Slot> old(capacity, Slot{empty, 0});
-    old.swap(slots_);
-    mask_ = capacity - 1;
-    shift_ = 64;
-    for(std::size_t c = capacity; c > 1; c >>= 1)
-      --shift_;
-    size_ = 0;
-    for(const Slot& s : old)
-      if(s.edge != empty)
-        insert(s.edge, s.code);
-  }
-
-  std::vector<Slot> slots_;
-  std::size_t mask_ = 0, size_ = 0;
-  int shift_ = 64;
-};
-
 // Half-edges waiting for their twin, filed under the edge's smaller endpoint u in a ring of
 // per-vertex lists indexed by u modulo a power of two. Faces arrive in band order (sorted by
 // smallest index, spatial_order.h), so the endpoints with waiting half-edges lie in a window
 // narrower than the ring and a lookup is a scan of a few entries in cache. A list that is full,
-// or whose ring slot is claimed by a later vertex, spills into Open_halfedge_table; one bit per
+// or whose ring slot is claimed by a later vertex, spills into a hash map; one bit per
 // vertex says whether it has spilled, so that the table is only searched for those (hull
 // half-edges wait forever and would otherwise keep it busy).
 class Open_halfedges
@@ -273,7 +181,7 @@ public:
         return true;
       }
     if(((spilled_[u >> 6] >> (u & 63)) & 1) != 0 &&
-       spill_.take(Open_halfedge_table::edge_key(u, x), twin)) {
+       spill_.take(edge_key(u, x), twin)) {
       --open_;
       return true;
     }
@@ -296,7 +204,9 @@ public:
     for(const List& list : lists_)
       for(std::uint32_t k = 0; k < list.count; ++k)
         visit(list.owner, list.other[k], list.code[k]);
-    spill_.for_each(visit);
+    spill_.for_each([&](std::uint64_t edge, std::uintptr_t code) {
+      visit(std::uint32_t(edge >> 32), std::uint32_t(edge), code);
+    });
   }
 
 private:
@@ -308,15 +218,20 @@ private:
     std::uint32_t other[capacity];
     std::uintptr_t code[capacity];
   };
+  static std::uint64_t edge_key(std::uint32_t smaller, std::uint32_t larger)
+  {
+    return std::uint64_t(smaller) << 32 | larger;
+  }
   void spill(std::uint32_t u, std::uint32_t x, std::uintptr_t code)
   {
-    spill_.insert(Open_halfedge_table::edge_key(u, x), code);
+    spill_.insert(edge_key(u, x), code);
     spilled_[u >> 6] |= std::uint64_t(1) << (u & 63);
   }
 
   std::vector<List> lists_;
   std::size_t mask_ = 0, open_ = 0;
-  Open_halfedge_table spill_;
+  // Overflow: keyed by the undirected edge (smaller index, larger index).
+  Hash_map<std::uint64_t, std::uintptr_t> spill_{1u << 8};
   std::vector<std::uint64_t> spilled_; // one bit per vertex: has it spilled?
 };
 
@@ -756,6 +671,9 @@ private:
   void fill_small_holes(PointIterator points, std::vector<Boundary_halfedge>& halfedges)
   {
     constexpr std::size_t max_fill = 32;
+    // Turning around a vertex through more linked faces than this (a vertex's degree is
+    // about 6) means faces winding around it: left to carve_repair.h.
+    constexpr int longest_turn = 64;
     const std::size_t m = halfedges.size();
     const std::size_t no_successor = m;
     auto& tds = tr_.tds();
@@ -778,7 +696,7 @@ private:
       const Vertex_handle v = f->vertex(cw(int(halfedges[k].code & index_bits)));
       int leaving = ccw(int(halfedges[k].code & index_bits)); // f's half-edge that leaves v
       for(int turns = 0; f->neighbor(leaving) != Face_handle(); ++turns) {
-        if(turns == 64)
+        if(turns == longest_turn)
           return no_successor; // faces winding around v: not a hole to fill here
         const Face_handle g = f->neighbor(leaving);
         leaving = cw(g->index(v));

@@ -15,6 +15,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <vector>
 #include <type_traits>
 #include <utility>
 
@@ -169,6 +170,27 @@ bool is_convex_ccw_cycle(const Gt& gt, std::size_t m, PointAt point)
       ++wraps;
   }
   return wraps == 1;
+}
+
+// Whether the hull of `tr` (dimension 2) is a convex polygon wound once counterclockwise.
+// The hull is read in ccw order: the face outside hull edge u->v is (v, u, infinite).
+template <class Triangulation>
+bool hull_is_convex_and_wound_once(const Triangulation& tr)
+{
+  using Face_handle = typename Triangulation::Face_handle;
+  using Point = typename Triangulation::Point;
+  const auto infinite = tr.infinite_vertex();
+  std::vector<const Point*> hull;
+  const Face_handle start = infinite->face();
+  Face_handle outside = start;
+  do {
+    const int i = outside->index(infinite);
+    hull.push_back(&outside->vertex(cw(i))->point());
+    outside = outside->neighbor(cw(i));
+  } while(outside != start && hull.size() <= tr.number_of_vertices());
+  return outside == start &&
+         is_convex_ccw_cycle(tr.geom_traits(), hull.size(),
+                             [&](std::size_t k) -> const Point& { return *hull[k]; });
 }
 
 } // namespace internal

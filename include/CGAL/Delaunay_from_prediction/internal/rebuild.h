@@ -2,21 +2,20 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Author(s): Delaunay_from_prediction founding team
 //
-// The insertion engine: incremental Delaunay insertion (point_insertion.h: a walk, then the
-// split and flips of the common case, CGAL's insertion for the rest), in a biased randomized
-// grid order with the previous vertex as hint (CGAL's range insert does the same after a
+// Builds from scratch: the package's insertion (insertion.h) in a biased randomized grid
+// order with the previous vertex as hint (CGAL's range insert does the same after a
 // spatial_sort that costs a third of its time; the grid order is ten times cheaper and was
 // measured 8-15% faster overall at 1e6 points), over point indices so that duplicates keep
-// the smallest index. Used for points no face covers, for from-scratch
-// fallbacks, and, through a transplant, for rebuilding a caller's triangulation in place
-// while keeping its vertex objects.
+// the smallest index. Used for points no face covers, for from-scratch fallbacks, and,
+// through a transplant, for rebuilding a caller's triangulation in place while keeping its
+// vertex objects.
 
 #ifndef CGAL_DELAUNAY_FROM_PREDICTION_INTERNAL_REBUILD_H
 #define CGAL_DELAUNAY_FROM_PREDICTION_INTERNAL_REBUILD_H
 
 #include <CGAL/Delaunay_from_prediction/Statistics.h>
 #include <CGAL/Delaunay_from_prediction/internal/exact_predicates.h>
-#include <CGAL/Delaunay_from_prediction/internal/point_insertion.h>
+#include <CGAL/Delaunay_from_prediction/internal/insertion.h>
 #include <CGAL/Delaunay_from_prediction/internal/spatial_order.h>
 #include <CGAL/Delaunay_from_prediction/internal/vertex_info.h>
 

@@ -39,8 +39,10 @@
 #ifndef CGAL_DELAUNAY_FROM_PREDICTION_INTERNAL_REGION_REPAIR_H
 #define CGAL_DELAUNAY_FROM_PREDICTION_INTERNAL_REGION_REPAIR_H
 
-#include <CGAL/Delaunay_from_prediction/internal/carve_repair.h>
+#include <CGAL/Delaunay_from_prediction/internal/hash_map.h>
+#include <CGAL/Delaunay_from_prediction/internal/insertion.h>
 #include <CGAL/Delaunay_from_prediction/internal/predicates.h>
+#include <CGAL/Delaunay_from_prediction/internal/union_find.h>
 
 #include <CGAL/Delaunay_triangulation_2.h>
 #include <CGAL/Triangulation_data_structure_2.h>
@@ -534,14 +536,8 @@ private:
       size.push_back(std::uint32_t(queue.size()));
     }
     // Small regions join a neighbour.
-    std::vector<std::uint32_t> parent(size.size());
-    for(std::uint32_t r = 0; r < parent.size(); ++r)
-      parent[r] = r;
-    auto find = [&](std::uint32_t r) {
-      while(parent[r] != r)
-        r = parent[r] = parent[parent[r]];
-      return r;
-    };
+    Union_find regions_joined(size.size());
+    auto find = [&](std::uint32_t r) { return std::uint32_t(regions_joined.find(r)); };
     for(std::size_t k = 0; k < F; ++k) {
       const std::uint32_t r = region_[k];
       if(r == outside || 4 * size[r] >= t || find(r) != r)
@@ -549,14 +545,14 @@ private:
       for(int i = 0; i < 3; ++i) {
         const std::uint32_t q = region_[neighbor_[3 * k + i]];
         if(q != outside && find(q) != r) {
-          parent[r] = find(q);
+          regions_joined.join(r, q);
           break;
         }
       }
     }
     std::uint32_t regions = 0;
     std::vector<std::uint32_t> label(size.size(), none);
-    for(std::uint32_t r = 0; r < parent.size(); ++r)
+    for(std::uint32_t r = 0; r < size.size(); ++r)
       if(find(r) == r)
         label[r] = regions++;
     for(std::size_t k = 0; k < F; ++k)

@@ -11,7 +11,7 @@
 // insertion of rebuild.h, so no input costs much more than a build from scratch.
 //
 // What differs from the paper, and why:
-// - The rounds insert points one by one by incremental insertion (point_insertion.h; the
+// - The rounds insert points one by one by incremental insertion (insertion.h; the
 //   lower envelopes of the proof are that insertion's result); conflict lists are not kept: each
 //   point is located when it is inserted, by a walk in the current triangulation from the
 //   nearest ancestor in the tree already inserted (the paper walks along every tree edge in
@@ -33,7 +33,7 @@
 #define CGAL_DELAUNAY_FROM_PREDICTION_INTERNAL_SPANNING_TREE_INSERTION_H
 
 #include <CGAL/Delaunay_from_prediction/Statistics.h>
-#include <CGAL/Delaunay_from_prediction/internal/point_insertion.h>
+#include <CGAL/Delaunay_from_prediction/internal/insertion.h>
 #include <CGAL/Delaunay_from_prediction/internal/predicates.h>
 #include <CGAL/Delaunay_from_prediction/internal/random.h>
 #include <CGAL/Delaunay_from_prediction/internal/rebuild.h>
@@ -219,117 +219,6 @@ inline std::vector<unsigned char> gradation_rounds(const Preorder_forest& forest
     round[r] = i;
   }
   return round;
-}
-
-// Last vertex inserted in each cell of a uniform grid over the points' bounding box, at two
-// resolutions (about 4 and 256 points a cell once all are in): where a walk from the tree
-// hint is too long, the walk starts again from there. Coordinates are rounded to double
-// only to pick a cell.
-template <class Vertex_handle>
-class Vertex_grid
-{
-public:
-  template <class PointAt>
-  Vertex_grid(std::size_t n, PointAt point_at)
-  {
-    if(n == 0)
-      return;
-    const Box box = bounding_box(n, point_at);
-    set_up(n, box.xmin, box.xmax, box.ymin, box.ymax);
-  }
-
-  // A grid for n points in the box [xmin, xmax] x [ymin, ymax] (points outside it fall in
-  // the border cells).
-  Vertex_grid(std::size_t n, double xmin, double xmax, double ymin, double ymax)
-  {
-    if(n != 0)
-      set_up(n, xmin, xmax, ymin, ymax);
-  }
-
-  template <class Point>
-  void record(const Point& p, Vertex_handle v)
-  {
-    std::size_t cx, cy;
-    cell(p, cx, cy);
-    fine_[cy * fine_side_ + cx] = v;
-    coarse_[(cy / 8) * coarse_side_ + cx / 8] = v;
-  }
-
-  // A vertex inserted near p, or a null handle.
-  template <class Point>
-  Vertex_handle near(const Point& p) const
-  {
-    std::size_t cx, cy;
-    cell(p, cx, cy);
-    const Vertex_handle v = fine_[cy * fine_side_ + cx];
-    return v != Vertex_handle() ? v : coarse_[(cy / 8) * coarse_side_ + cx / 8];
-  }
-
-private:
-  void set_up(std::size_t n, double xmin, double xmax, double ymin, double ymax)
-  {
-    // Coarse cells are 8 x 8 fine cells.
-    coarse_side_ = (std::max)(std::size_t(1), std::size_t(std::sqrt(double(n) / 256)));
-    fine_side_ = 8 * coarse_side_;
-    column_ = Grid_axis(xmin, xmax, fine_side_);
-    row_ = Grid_axis(ymin, ymax, fine_side_);
-    fine_.assign(fine_side_ * fine_side_, Vertex_handle());
-    coarse_.assign(coarse_side_ * coarse_side_, Vertex_handle());
-  }
-
-  template <class Point>
-  void cell(const Point& p, std::size_t& cx, std::size_t& cy) const
-  {
-    cx = column_(CGAL::to_double(p.x()));
-    cy = row_(CGAL::to_double(p.y()));
-  }
-
-  Grid_axis column_, row_; // robust at any scale (see Grid_axis)
-  std::size_t fine_side_ = 8, coarse_side_ = 1;
-  std::vector<Vertex_handle> fine_, coarse_;
-};
-
-// The walk cap of a location from a hint among n points: about log2 n + 8 faces.
-inline std::size_t walk_cap(std::size_t n)
-{
-  std::size_t cap = 8;
-  for(std::size_t m = n; m > 1; m >>= 1)
-    cap += 1;
-  return cap;
-}
-
-// Inserts q into the Delaunay triangulation `dt`, located by a walk from vertex `from` (a
-// vertex inserted near q, as far as the caller knows: a tree neighbour, a hint) of at most
-// `cap` faces; past it the walk starts again from the vertex the grid holds near q and is
-// not capped. Returns q's vertex (an existing one for a duplicate). Counts the location in
-// `stats` (points_located, faces_visited, walk_fallbacks) when dt has dimension 2.
-// The one location-and-insertion step of every insertion from hints in the package (the
-// spanning-tree engine, imprecise points).
-template <class DT, class Grid>
-typename DT::Vertex_handle insert_walking_from(DT& dt, const typename DT::Point& q, typename DT::Vertex_handle from,
-                                               std::size_t cap, const Grid& grid,
-                                               std::vector<std::pair<typename DT::Face_handle, int>>& flip_stack,
-                                               Statistics& stats)
-{
-  using Vertex_handle = typename DT::Vertex_handle;
-  using Face_handle = typename DT::Face_handle;
-  if(dt.dimension() < 2)
-    return dt.insert(q, from->face());
-  Face_handle f = from->face();
-  int collinear = 0;
-  ++stats.points_located;
-  bool found = walk_towards(dt, f, q, cap, stats.faces_visited, collinear);
-  if(!found) {
-    ++stats.walk_fallbacks;
-    const Vertex_handle jump = grid.near(q);
-    if(jump != Vertex_handle())
-      f = jump->face();
-    // Bounded only so that an inexact kernel cannot cycle; CGAL's locate finishes then.
-    found = walk_towards(dt, f, q, 2 * dt.number_of_vertices() + 16, stats.faces_visited, collinear);
-  }
-  if(found && !f->has_vertex(dt.infinite_vertex()) && collinear == 0)
-    return insert_strictly_in_face(dt, q, f, flip_stack); // no need to locate again
-  return dt.insert(q, f); // on an edge, a vertex, or outside: CGAL's locate decides
 }
 
 // Whether the edges (ends listed in pairs) are much longer than the spacing of the points,

@@ -13,6 +13,9 @@
 #ifndef CGAL_DELAUNAY_FROM_PREDICTION_INTERNAL_SPATIAL_ORDER_H
 #define CGAL_DELAUNAY_FROM_PREDICTION_INTERNAL_SPATIAL_ORDER_H
 
+#include <CGAL/Delaunay_from_prediction/internal/grid.h>
+#include <CGAL/Delaunay_from_prediction/internal/random.h>
+
 #include <CGAL/number_utils.h>
 
 #include <algorithm>
@@ -27,120 +30,31 @@ namespace CGAL {
 namespace Delaunay_from_prediction {
 namespace internal {
 
-// The bounding box of points 0..n-1 (n > 0), in double.
-struct Box
-{
-  double xmin, xmax, ymin, ymax;
-};
-template <class PointAt>
-Box bounding_box(std::size_t n, PointAt point_at)
-{
-  Box b;
-  b.xmin = b.xmax = CGAL::to_double(point_at(0).x());
-  b.ymin = b.ymax = CGAL::to_double(point_at(0).y());
-  for(std::size_t k = 1; k < n; ++k) {
-    const double x = CGAL::to_double(point_at(k).x()), y = CGAL::to_double(point_at(k).y());
-    b.xmin = (std::min)(b.xmin, x);
-    b.xmax = (std::max)(b.xmax, x);
-    b.ymin = (std::min)(b.ymin, y);
-    b.ymax = (std::max)(b.ymax, y);
-  }
-  return b;
-}
-
-// Coordinates near 1e+-300 are valid input, and double arithmetic on them fails three ways:
-// a width of the box overflows (points at -1e308 and 1e308), squared distances overflow (at
-// 1e160) or underflow to 0 (at 1e-160: distinct points tie at distance 0), and a number of
-// cells divided by a subnormal width is inf (then (x - xmin) * inf is NaN at x = xmin, and
-// casting inf or NaN to an integer is undefined). Wherever double arithmetic only steers (a
-// grid cell, a hint, a guess), it runs on coordinates scaled by unit_scale() of their box:
-// a power of two, so the scaled coordinates are exact (but below 2^-1022 of the box, where
-// nothing is steered), and the box's larger side becomes about 1, so that no difference and
-// no square of one overflows, and squares underflow only for points closer than 2^-511 of
-// the box (a spread no grid resolves anyway). Every result decision is left to the kernel's
-// exact predicates.
-
-// A power of two s such that the larger side of the box, times s, is in [1, 2] (or in
-// [2^-74, 2^-72] for a box whose sides are only a few subnormals: s is at most 2^1000); 1 for
-// a box that is a point or is not finite. Exact on any finite box: a side that overflows is
-// measured on halved coordinates.
-inline double unit_scale(double xmin, double xmax, double ymin, double ymax)
-{
-  const double side = (std::max)(xmax - xmin, ymax - ymin);
-  int exponent = 0;
-  if(side <= (std::numeric_limits<double>::max)()) {
-    if(!(side > 0))
-      return 1;
-    exponent = std::ilogb(side);
-  } else {
-    const double half = (std::max)(xmax * 0.5 - xmin * 0.5, ymax * 0.5 - ymin * 0.5);
-    if(!(half <= (std::numeric_limits<double>::max)()))
-      return 1;
-    exponent = std::ilogb(half) + 1;
-  }
-  return std::ldexp(1.0, -(std::max)(exponent, -1000));
-}
-
-inline double unit_scale(const Box& b) { return unit_scale(b.xmin, b.xmax, b.ymin, b.ymax); }
-
-// The squared distance of two points, in double, on coordinates times `scale` (unit_scale()
-// of a box holding the points, so that it neither overflows nor underflows but for points
-// closer than 2^-511 of the box): for choosing where a search starts, never for a decision
-// the result depends on.
-template <class Point>
-double squared_distance_in_double(const Point& a, const Point& b, double scale)
-{
-  const double dx = CGAL::to_double(a.x()) * scale - CGAL::to_double(b.x()) * scale;
-  const double dy = CGAL::to_double(a.y()) * scale - CGAL::to_double(b.y()) * scale;
-  return dx * dx + dy * dy;
-}
-
-// The cells of one axis of a grid: `cells` equal cells over [lo, hi], coordinates beyond
-// falling in the end cells. Robust for any lo <= hi: the coordinates are scaled by
-// unit_scale() of the interval first, so the number of cells per unit is finite for a
-// subnormal width and a width that overflows, and (x - lo) * cells per unit is never NaN,
-// while a width of 0 gives 0 cells per unit (one cell); the guard `f > 0` maps -inf to cell 0
-// and the clamp maps inf to the last before the cast.
-struct Grid_axis
-{
-  double scale = 1, lo = 0, per_unit = 0, last = 0;
-
-  Grid_axis() = default;
-  Grid_axis(double lo_, double hi_, std::size_t cells)
-      : scale(unit_scale(lo_, hi_, 0, 0)), lo(lo_ * scale), last(double(cells - 1))
-  {
-    const double width = hi_ * scale - lo;
-    per_unit = width > 0 ? double(cells) / width : 0;
-  }
-
-  std::size_t operator()(double x) const
-  {
-    const double f = (x * scale - lo) * per_unit;
-    return std::size_t(f > 0 ? (std::min)(f, last) : 0);
-  }
-};
-
 // A grid cell with more points than this (the grids aim at four) is sorted again.
 constexpr std::size_t crowded_cell = 64;
 
 // The rounds of a biased randomized insertion order (BRIO): the next point is in round r with
-// probability 7/8^(r+1), the last round taking the rest; `state` is a splitmix64 state.
+// probability 7/8^(r+1), the last round taking the rest.
 constexpr std::uint32_t brio_rounds = 8;
-inline std::uint32_t brio_round(std::uint64_t& state)
+inline std::uint32_t brio_round(Splitmix64& random)
 {
-  std::uint64_t z = (state += 0x9E3779B97F4A7C15ull);
-  z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-  z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
   std::uint32_t round = 0;
-  for(std::uint64_t bits = z ^ (z >> 31); round + 1 < brio_rounds && (bits & 7) == 0; bits >>= 3)
+  for(std::uint64_t bits = random(); round + 1 < brio_rounds && (bits & 7) == 0; bits >>= 3)
     ++round;
   return round;
 }
 
+// The seed of the rounds: fixed, so that a build is the same from run to run.
+constexpr std::uint64_t brio_seed = 0x5eed5eed5eedull;
+
+// How often a crowded cell of sort_serpentine() is sorted again within itself: six levels
+// resolve densities varying by 4^6 times the points per cell.
+constexpr int max_grid_depth = 6;
+
 // Writes to `out` the indices in [first, last) sorted along a serpentine grid over the
 // bounding box of their points, about four points a cell, rows alternately left to right and
 // right to left, so that consecutive indices name nearby points; then sorts each crowded cell
-// the same way over its own box, up to depth 6. Cells far above their share (clusters, a density varying by orders of
+// the same way over its own box, up to max_grid_depth. Cells far above their share (clusters, a density varying by orders of
 // magnitude) need it: a build of 1e6 points of density varying 10^8 times across the square
 // (x = u^4, y = v^4) took 1.6 times CGAL's time without, 0.8 times with. With
 // `biased_rounds` (depth 0 only), the points are first dealt into rounds (round r with
@@ -164,14 +78,14 @@ void sort_serpentine(const Index* first, const Index* last, Index* out, PointAt 
                                       : (std::max)(std::size_t(2), fit);
   const std::size_t cells = side * side;
   const Grid_axis column(xmin, xmax, side), row(ymin, ymax, side);
-  std::uint64_t state = 0x5eed5eed5eedull;
+  Splitmix64 random{brio_seed};
   std::vector<std::uint32_t> key(m), start((biased_rounds ? brio_rounds : 1) * cells + 1, 0);
   for(std::size_t k = 0; k < m; ++k) {
     const auto& p = point_at(first[k]);
     const std::size_t cx = column(CGAL::to_double(p.x())), cy = row(CGAL::to_double(p.y()));
     std::uint32_t cell = std::uint32_t(cy * side + ((cy & 1) ? side - 1 - cx : cx));
     if(biased_rounds)
-      cell += std::uint32_t((brio_rounds - 1 - brio_round(state)) * cells);
+      cell += std::uint32_t((brio_rounds - 1 - brio_round(random)) * cells);
     key[k] = cell;
     ++start[cell + 1];
   }
@@ -179,7 +93,7 @@ void sort_serpentine(const Index* first, const Index* last, Index* out, PointAt 
     start[c] += start[c - 1];
   for(std::size_t k = 0; k < m; ++k)
     out[start[key[k]]++] = first[k];
-  if(depth >= 6)
+  if(depth >= max_grid_depth)
     return;
   std::vector<Index> crowded;
   for(std::size_t c = 0, begin = 0; c + 1 < start.size(); begin = start[c], ++c)
@@ -208,11 +122,11 @@ void sort_along_grid(std::vector<Index>& indices, PointAt point_at, bool biased_
 template <class Index>
 void deal_into_rounds(std::vector<Index>& indices)
 {
-  std::uint64_t state = 0x5eed5eed5eedull;
+  Splitmix64 random{brio_seed};
   std::vector<std::uint8_t> round(indices.size());
   std::size_t start[brio_rounds + 1] = {};
   for(std::size_t k = 0; k < indices.size(); ++k) {
-    round[k] = std::uint8_t(brio_rounds - 1 - brio_round(state));
+    round[k] = std::uint8_t(brio_rounds - 1 - brio_round(random));
     ++start[round[k] + 1];
   }
   for(std::uint32_t r = 1; r <= brio_rounds; ++r)

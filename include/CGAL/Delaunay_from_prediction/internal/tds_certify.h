@@ -9,7 +9,7 @@
 #ifndef CGAL_DELAUNAY_FROM_PREDICTION_INTERNAL_TDS_CERTIFY_H
 #define CGAL_DELAUNAY_FROM_PREDICTION_INTERNAL_TDS_CERTIFY_H
 
-#include <CGAL/Delaunay_from_prediction/internal/lawson_flip.h>
+#include <CGAL/Delaunay_from_prediction/internal/flips.h>
 #include <CGAL/Delaunay_from_prediction/internal/predicates.h>
 
 #include <cstddef>
@@ -20,27 +20,6 @@
 namespace CGAL {
 namespace Delaunay_from_prediction {
 namespace internal {
-
-// Whether the hull of `tr` (dimension 2) is a convex polygon wound once counterclockwise.
-// The hull is read in ccw order: the face outside hull edge u->v is (v, u, infinite).
-template <class Triangulation>
-bool hull_is_convex_and_wound_once(const Triangulation& tr)
-{
-  using Face_handle = typename Triangulation::Face_handle;
-  using Point = typename Triangulation::Point;
-  const auto infinite = tr.infinite_vertex();
-  std::vector<const Point*> hull;
-  const Face_handle start = infinite->face();
-  Face_handle outside = start;
-  do {
-    const int i = outside->index(infinite);
-    hull.push_back(&outside->vertex(cw(i))->point());
-    outside = outside->neighbor(cw(i));
-  } while(outside != start && hull.size() <= tr.number_of_vertices());
-  return outside == start &&
-         is_convex_ccw_cycle(tr.geom_traits(), hull.size(),
-                             [&](std::size_t k) -> const Point& { return *hull[k]; });
-}
 
 // Lawson's flips made during certification (make_delaunay), where the pass finds a failing
 // edge between two counterclockwise faces: the faces and vertices it just read are in the

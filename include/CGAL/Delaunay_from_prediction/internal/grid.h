@@ -1,0 +1,121 @@
+// Copyright (c) 2026 Delaunay_from_prediction contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Author(s): Delaunay_from_prediction founding team
+//
+// The package's one grid: bounding boxes, the scale that keeps double arithmetic finite at
+// any coordinates, and the cells of an axis, clamped. Used by the spatial order, the vertex
+// grid of hinted insertion, BrioDC's nearest-neighbour cells and the carve's crossing test.
+// Double arithmetic here only steers (which cell, which start): no result depends on it.
+
+#ifndef CGAL_DELAUNAY_FROM_PREDICTION_INTERNAL_GRID_H
+#define CGAL_DELAUNAY_FROM_PREDICTION_INTERNAL_GRID_H
+
+#include <CGAL/number_utils.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <limits>
+
+namespace CGAL {
+namespace Delaunay_from_prediction {
+namespace internal {
+
+// The bounding box of points 0..n-1 (n > 0), in double.
+struct Box
+{
+  double xmin, xmax, ymin, ymax;
+};
+template <class PointAt>
+Box bounding_box(std::size_t n, PointAt point_at)
+{
+  Box b;
+  b.xmin = b.xmax = CGAL::to_double(point_at(0).x());
+  b.ymin = b.ymax = CGAL::to_double(point_at(0).y());
+  for(std::size_t k = 1; k < n; ++k) {
+    const double x = CGAL::to_double(point_at(k).x()), y = CGAL::to_double(point_at(k).y());
+    b.xmin = (std::min)(b.xmin, x);
+    b.xmax = (std::max)(b.xmax, x);
+    b.ymin = (std::min)(b.ymin, y);
+    b.ymax = (std::max)(b.ymax, y);
+  }
+  return b;
+}
+
+// Coordinates near 1e+-300 are valid input, and double arithmetic on them fails three ways:
+// a width of the box overflows (points at -1e308 and 1e308), squared distances overflow (at
+// 1e160) or underflow to 0 (at 1e-160: distinct points tie at distance 0), and a number of
+// cells divided by a subnormal width is inf (then (x - xmin) * inf is NaN at x = xmin, and
+// casting inf or NaN to an integer is undefined). Wherever double arithmetic only steers (a
+// grid cell, a hint, a guess), it runs on coordinates scaled by unit_scale() of their box:
+// a power of two, so the scaled coordinates are exact (but below 2^-1022 of the box, where
+// nothing is steered), and the box's larger side becomes about 1, so that no difference and
+// no square of one overflows, and squares underflow only for points closer than 2^-511 of
+// the box (a spread no grid resolves anyway). Every result decision is left to the kernel's
+// exact predicates.
+
+// A power of two s such that the larger side of the box, times s, is in [1, 2] (or in
+// [2^-74, 2^-72] for a box whose sides are only a few subnormals: s is at most 2^1000); 1 for
+// a box that is a point or is not finite. Exact on any finite box: a side that overflows is
+// measured on halved coordinates.
+inline double unit_scale(double xmin, double xmax, double ymin, double ymax)
+{
+  const double side = (std::max)(xmax - xmin, ymax - ymin);
+  int exponent = 0;
+  if(side <= (std::numeric_limits<double>::max)()) {
+    if(!(side > 0))
+      return 1;
+    exponent = std::ilogb(side);
+  } else {
+    const double half = (std::max)(xmax * 0.5 - xmin * 0.5, ymax * 0.5 - ymin * 0.5);
+    if(!(half <= (std::numeric_limits<double>::max)()))
+      return 1;
+    exponent = std::ilogb(half) + 1;
+  }
+  return std::ldexp(1.0, -(std::max)(exponent, -1000));
+}
+
+inline double unit_scale(const Box& b) { return unit_scale(b.xmin, b.xmax, b.ymin, b.ymax); }
+
+// The squared distance of two points, in double, on coordinates times `scale` (unit_scale()
+// of a box holding the points, so that it neither overflows nor underflows but for points
+// closer than 2^-511 of the box): for choosing where a search starts, never for a decision
+// the result depends on.
+template <class Point>
+double squared_distance_in_double(const Point& a, const Point& b, double scale)
+{
+  const double dx = CGAL::to_double(a.x()) * scale - CGAL::to_double(b.x()) * scale;
+  const double dy = CGAL::to_double(a.y()) * scale - CGAL::to_double(b.y()) * scale;
+  return dx * dx + dy * dy;
+}
+
+// The cells of one axis of a grid: `cells` equal cells over [lo, hi], coordinates beyond
+// falling in the end cells. Robust for any lo <= hi: the coordinates are scaled by
+// unit_scale() of the interval first, so the number of cells per unit is finite for a
+// subnormal width and a width that overflows, and (x - lo) * cells per unit is never NaN,
+// while a width of 0 gives 0 cells per unit (one cell); the guard `f > 0` maps -inf to cell 0
+// and the clamp maps inf to the last before the cast.
+struct Grid_axis
+{
+  double scale = 1, lo = 0, per_unit = 0, last = 0;
+
+  Grid_axis() = default;
+  Grid_axis(double lo_, double hi_, std::size_t cells)
+      : scale(unit_scale(lo_, hi_, 0, 0)), lo(lo_ * scale), last(double(cells - 1))
+  {
+    const double width = hi_ * scale - lo;
+    per_unit = width > 0 ? double(cells) / width : 0;
+  }
+
+  std::size_t operator()(double x) const
+  {
+    const double f = (x * scale - lo) * per_unit;
+    return std::size_t(f > 0 ? (std::min)(f, last) : 0);
+  }
+};
+
+} // namespace internal
+} // namespace Delaunay_from_prediction
+} // namespace CGAL
+
+#endif // CGAL_DELAUNAY_FROM_PREDICTION_INTERNAL_GRID_H
