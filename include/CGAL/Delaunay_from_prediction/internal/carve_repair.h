@@ -32,8 +32,8 @@
 #ifndef CGAL_DELAUNAY_FROM_PREDICTION_INTERNAL_CARVE_REPAIR_H
 #define CGAL_DELAUNAY_FROM_PREDICTION_INTERNAL_CARVE_REPAIR_H
 
-#include <CGAL/Delaunay_from_prediction/internal/ear_clipping.h>
 #include <CGAL/Delaunay_from_prediction/internal/hash_map.h>
+#include <CGAL/Delaunay_from_prediction/internal/hole_tracing.h>
 #include <CGAL/Delaunay_from_prediction/internal/flips.h>
 #include <CGAL/Delaunay_from_prediction/internal/insertion.h>
 #include <CGAL/Delaunay_from_prediction/internal/predicates.h>
@@ -526,7 +526,8 @@ private:
         widen(cycle); // not a closed cycle: the faces around are inconsistent
         continue;
       }
-      split_into_loops(cycle, cycles);
+      split_at_repeated_vertices(cycle, [&](std::size_t h) -> const void* { return &*tail_vertex(h); },
+                                 scratch_loop_, [&](auto first, auto last) { cycles.emplace_back(first, last); });
       group_of_cycle.resize(cycles.size(), groups_++);
     }
 
@@ -741,15 +742,11 @@ private:
   {
     Face_handle f = open_[k].first;
     const Vertex_handle v = f->vertex(cw(open_[k].second));
-    for(std::size_t steps = 0; steps < longest_fan; ++steps) {
-      const int out = cw(f->index(v)); // the half-edge of f leaving v
-      if(is_open(f, out)) {
-        const std::size_t* at = position_.find(halfedge_key(Edge(f, out)));
-        return at == nullptr || !alive_[*at] ? none : *at;
-      }
-      f = f->neighbor(out);
-    }
-    return none;
+    int out = ccw(open_[k].second); // the half-edge of f leaving v
+    if(!turn_to_open_halfedge(f, v, out, [&](Face_handle g, int i) { return is_open(g, i); }, longest_fan))
+      return none;
+    const std::size_t* at = position_.find(halfedge_key(Edge(f, out)));
+    return at == nullptr || !alive_[*at] ? none : *at;
   }
 
   // next_open(), from the open half-edges leaving the head: when it has only one, that one
@@ -764,42 +761,6 @@ private:
   }
 
   Vertex_handle tail_vertex(std::size_t k) const { return open_[k].first->vertex(ccw(open_[k].second)); }
-
-  // Splits a cycle at every vertex it passes twice into loops that pass each vertex once, in
-  // one pass: a stack of the half-edges since the last split, and where each tail sits in it
-  // (an entry is current if the stack still holds that vertex there).
-  void split_into_loops(const std::vector<std::size_t>& cycle, std::vector<std::vector<std::size_t>>& loops) const
-  {
-    const std::size_t m = cycle.size();
-    if(m <= 16) { // most holes: a quadratic check, no allocation
-      const void* tails[16];
-      for(std::size_t p = 0; p < m; ++p)
-        tails[p] = &*tail_vertex(cycle[p]);
-      bool repeats = false;
-      for(std::size_t p = 0; p < m && !repeats; ++p)
-        for(std::size_t q = p + 1; q < m && !repeats; ++q)
-          repeats = tails[p] == tails[q];
-      if(!repeats) {
-        loops.push_back(cycle);
-        return;
-      }
-    }
-    std::vector<std::size_t> stack;
-    stack.reserve(m);
-    Address_table<std::size_t> at;
-    for(const std::size_t h : cycle) {
-      const void* v = &*tail_vertex(h);
-      std::size_t* seen = at.insert(v, stack.size()).first;
-      if(*seen < stack.size() && &*tail_vertex(stack[*seen]) == v) {
-        loops.emplace_back(stack.begin() + std::ptrdiff_t(*seen), stack.end());
-        stack.resize(*seen);
-      }
-      *seen = stack.size();
-      stack.push_back(h);
-    }
-    loops.push_back(std::move(stack));
-  }
-
 
   const Point& tail_point(std::size_t k) const
   {
@@ -821,40 +782,24 @@ private:
   }
 
 
-  // Fills one hole by ear clipping (ear_clipping.h). The open half-edges run with the kept
-  // faces on their left, so the hole is on their right: its polygon, counterclockwise, is the
-  // cycle reversed.
+  // Fills one hole by ear clipping (hole_tracing.h).
   bool fill(const std::vector<std::size_t>& cycle, std::vector<Ear>& ears)
   {
     const std::size_t m = cycle.size();
-    // Open half-edge cycle[q] runs from tail t_q to t_(q+1). Reversed, the polygon has vertex
-    // p = t_(m-1-p), and its edge from p to p+1 is cycle[m-2-p] (indices mod m) reversed.
-    std::vector<Vertex_handle>& vertex = scratch_vertices_;
-    std::vector<std::size_t>& edge_after = scratch_edges_;
-    vertex.resize(m);
-    edge_after.resize(m);
-    for(std::size_t p = 0; p < m; ++p) {
-      vertex[p] = tail_vertex(cycle[m - 1 - p]);
-      edge_after[p] = cycle[(2 * m - 2 - p) % m];
-    }
     ears.clear();
-    std::vector<std::array<std::size_t, 3>>& cut = scratch_ears_;
-    if(!clip_ears(tr_.geom_traits(), m, [&](std::size_t p) -> const Point& { return vertex[p]->point(); }, cut,
-                  scratch_prev_, scratch_next_))
+    std::vector<Hole_ear>& cut = scratch_ears_;
+    if(!clipper_.clip(tr_.geom_traits(), m, [&](std::size_t q) -> const Point& { return tail_point(cycle[q]); }, cut))
       return false;
     ears.reserve(cut.size());
-    for(const auto& t : cut) {
-      // Ear (a, b, c) in vertex slots 0, 1, 2; the edge opposite slot i runs from ends[i][0]
-      // to ends[i][1]: a polygon edge (paired with its open half-edge) or a diagonal (paired
-      // with the other ear on it through its ends, unique in this hole).
+    for(const Hole_ear& t : cut) {
+      // A side of the hole pairs with its open half-edge, a diagonal with the other ear on it
+      // through its ends, unique in this hole.
       Ear e;
-      const std::size_t ends[3][2] = {{t[1], t[2]}, {t[2], t[0]}, {t[0], t[1]}};
       for(int i = 0; i < 3; ++i) {
-        e.v[i] = vertex[t[i]];
-        const std::size_t from = ends[i][0], to = ends[i][1];
-        e.open[i] = (from + 1) % m == to ? edge_after[from] : none;
-        const std::uint64_t lo = (std::min)(from, to), hi = (std::max)(from, to);
-        e.diagonal[i] = lo << 32 | hi;
+        e.v[i] = tail_vertex(cycle[hole_corner(t.corner[i], m)]);
+        e.open[i] = t.closes[i] == Hole_ear::diagonal ? none : cycle[t.closes[i]];
+        const std::uint64_t from = t.corner[ccw(i)], to = t.corner[cw(i)];
+        e.diagonal[i] = (std::min)(from, to) << 32 | (std::max)(from, to);
       }
       ears.push_back(e);
     }
@@ -960,11 +905,11 @@ private:
   std::vector<Face_handle> created_;
   Address_table<char> created_set_;
   std::vector<Undo_entry> undo_;
-  // Scratch space of fill(), reused across holes.
-  std::vector<Vertex_handle> scratch_vertices_;
-  std::vector<Face_handle> scratch_faces_; // of carve_faces_around()
-  std::vector<std::size_t> scratch_edges_, scratch_prev_, scratch_next_;
-  std::vector<std::array<std::size_t, 3>> scratch_ears_;
+  // Scratch space, reused across holes.
+  Hole_clipper clipper_;
+  std::vector<Hole_ear> scratch_ears_;
+  std::vector<std::size_t> scratch_loop_;   // of split_at_repeated_vertices()
+  std::vector<Face_handle> scratch_faces_;  // of carve_faces_around()
   Address_table<std::size_t> old_index_;
 };
 

@@ -20,8 +20,8 @@
 #ifndef CGAL_DELAUNAY_FROM_PREDICTION_INTERNAL_IMPORT_PREDICTION_H
 #define CGAL_DELAUNAY_FROM_PREDICTION_INTERNAL_IMPORT_PREDICTION_H
 
-#include <CGAL/Delaunay_from_prediction/internal/ear_clipping.h>
 #include <CGAL/Delaunay_from_prediction/internal/hash_map.h>
+#include <CGAL/Delaunay_from_prediction/internal/hole_tracing.h>
 #include <CGAL/Delaunay_from_prediction/internal/input_check.h>
 #include <CGAL/Delaunay_from_prediction/internal/predicates.h>
 #include <CGAL/Delaunay_from_prediction/internal/random.h>
@@ -652,15 +652,15 @@ private:
   };
 
   // Tolerant import, when no face was left out: fills the small holes here instead of handing
-  // them to carve_repair.h, whose general tracing (hash tables of half-edges and vertices,
-  // incremental rounds) is built for carving. Measured with 1% of the faces of a DT of 1e6
+  // them to carve_repair.h, whose store of open half-edges (hash tables of half-edges and
+  // vertices, incremental rounds) is built for carving. Measured with 1% of the faces of a DT of 1e6
   // points deleted (19,549 holes, nearly all single triangles): 0.026 s here against 0.045 s
   // for the tracing, filling and commit there, and the whole call 5-6% faster (in-process
   // A/B; the lookups of the kept faces around the holes are most of what is left).
-  // The open half-edges are traced into cycles of at most max_fill edges (the successor as in
-  // carve_repair.h: the next open half-edge leaving the head, turning through the kept
-  // faces), split at repeated vertices into loops; a loop is filled when ear clipping
-  // (ear_clipping.h) triangulates it, reversed, as a counterclockwise polygon (so the hull's
+  // The tracing is the carve's (hole_tracing.h), on a sorted array of index pairs: the open
+  // half-edges are traced into cycles of at most max_fill edges, split at repeated vertices
+  // into loops; a loop is filled when ear clipping triangulates it, reversed, as a
+  // counterclockwise polygon (so the hull's
   // cycle, clockwise once reversed, and islands are never taken), and when it shares no vertex
   // with a loop left open. The ears are paired like imported faces, with their in-circle
   // tests; everything else is left open for carve_repair.h. Nothing here needs the holes to
@@ -673,7 +673,7 @@ private:
     constexpr std::size_t max_fill = 32;
     // Turning around a vertex through more linked faces than this (a vertex's degree is
     // about 6) means faces winding around it: left to carve_repair.h.
-    constexpr int longest_turn = 64;
+    constexpr std::size_t longest_turn = 64;
     const std::size_t m = halfedges.size();
     const std::size_t no_successor = m;
     auto& tds = tr_.tds();
@@ -695,13 +695,9 @@ private:
       Face_handle f = face_of(halfedges[k].code);
       const Vertex_handle v = f->vertex(cw(int(halfedges[k].code & index_bits)));
       int leaving = ccw(int(halfedges[k].code & index_bits)); // f's half-edge that leaves v
-      for(int turns = 0; f->neighbor(leaving) != Face_handle(); ++turns) {
-        if(turns == longest_turn)
-          return no_successor; // faces winding around v: not a hole to fill here
-        const Face_handle g = f->neighbor(leaving);
-        leaving = cw(g->index(v));
-        f = g;
-      }
+      if(!turn_to_open_halfedge(f, v, leaving, [](Face_handle g, int i) { return g->neighbor(i) == Face_handle(); },
+                                longest_turn))
+        return no_successor; // faces winding around v: not a hole to fill here
       for(auto it = first; it != halfedges.end() && it->tail == head; ++it)
         if((it->code & ~flag_bits) == reinterpret_cast<std::uintptr_t>(&*f) && int(it->code & index_bits) == leaving)
           return std::size_t(it - halfedges.begin());
@@ -725,19 +721,19 @@ private:
     // Half-edge loop[q] runs from t_q to t_(q+1); reversed, the polygon has vertex
     // p = t_(m-1-p), and its edge from p to p+1 is the twin of loop[m-2-p] (indices mod m).
     std::vector<char> done(m, 0);
-    std::vector<std::size_t> cycle, loop, polygon, scratch_prev, scratch_next;
-    std::vector<std::array<std::size_t, 3>> ears;
+    std::vector<std::size_t> cycle, loop, polygon;
+    Hole_clipper clipper;
+    std::vector<Hole_ear> ears;
     std::vector<std::size_t> loop_halfedges, loop_start(1, 0), loop_ears_start(1, 0);
-    std::vector<std::array<std::size_t, 3>> loop_ears;
+    std::vector<Hole_ear> loop_ears;
     std::vector<std::uint32_t> left_open; // vertices of the cycles and loops not filled
     auto plan_loop = [&](std::vector<std::size_t>::const_iterator first, std::vector<std::size_t>::const_iterator last) {
       const std::size_t size = std::size_t(last - first);
-      polygon.resize(size);
-      for(std::size_t p = 0; p < size; ++p)
-        polygon[p] = halfedges[first[std::ptrdiff_t(size - 1 - p)]].tail;
-      if(size < 3 || !clip_ears(gt, size, [&](std::size_t p) -> const Point& { return points[polygon[p]]; },
-                                ears, scratch_prev, scratch_next)) {
-        left_open.insert(left_open.end(), polygon.begin(), polygon.end());
+      if(size < 3 ||
+         !clipper.clip(gt, size, [&](std::size_t q) -> decltype(auto) { return points[halfedges[first[std::ptrdiff_t(q)]].tail]; },
+                       ears)) {
+        for(auto h = first; h != last; ++h)
+          left_open.push_back(halfedges[*h].tail);
         return;
       }
       loop_halfedges.insert(loop_halfedges.end(), first, last);
@@ -768,20 +764,8 @@ private:
       }
       // A cycle through a vertex twice (holes that touch there, the successor having turned
       // through the faces between them) is split there into loops, each through distinct
-      // vertices: a stack of the half-edges since the last split.
-      loop.clear();
-      for(const std::size_t h : cycle) {
-        const std::uint32_t tail = halfedges[h].tail;
-        std::size_t seen = 0;
-        while(seen < loop.size() && halfedges[loop[seen]].tail != tail)
-          ++seen;
-        if(seen < loop.size()) {
-          plan_loop(loop.begin() + std::ptrdiff_t(seen), loop.end());
-          loop.resize(seen);
-        }
-        loop.push_back(h);
-      }
-      plan_loop(loop.begin(), loop.end());
+      // vertices.
+      split_at_repeated_vertices(cycle, [&](std::size_t h) { return halfedges[h].tail; }, loop, plan_loop);
     }
     std::sort(left_open.begin(), left_open.end());
 
@@ -798,28 +782,27 @@ private:
       polygon.resize(size);
       bool touches_open = false;
       for(std::size_t p = 0; p < size; ++p) {
-        polygon[p] = halfedges[first[size - 1 - p]].tail;
+        polygon[p] = halfedges[first[hole_corner(p, size)]].tail;
         touches_open = touches_open || std::binary_search(left_open.begin(), left_open.end(), polygon[p]);
       }
       if(touches_open)
         continue;
       diagonals.clear();
       for(std::size_t e = loop_ears_start[l]; e < loop_ears_start[l + 1]; ++e) {
-        const std::array<std::size_t, 3>& t = loop_ears[e];
+        const Hole_ear& t = loop_ears[e];
         Vertex_handle corner[3];
         for(int c = 0; c < 3; ++c) {
-          const std::uintptr_t code = halfedges[first[size - 1 - t[c]]].code;
+          const std::uintptr_t code = halfedges[first[hole_corner(t.corner[c], size)]].code;
           corner[c] = face_of(code)->vertex(ccw(int(code & index_bits)));
         }
         const Face_handle f = tds.create_face(corner[0], corner[1], corner[2]);
         out_.filled_faces.push_back(&*f);
-        // The edge opposite slot i runs from polygon vertex ends[i][0] to ends[i][1].
-        const std::size_t ends[3][2] = {{t[1], t[2]}, {t[2], t[0]}, {t[0], t[1]}};
+        // The edge opposite slot i runs from polygon vertex `from` to `to`.
         for(int i = 0; i < 3; ++i) {
-          const std::size_t from = ends[i][0], to = ends[i][1];
+          const std::size_t from = t.corner[ccw(i)], to = t.corner[cw(i)];
           const std::uint32_t tail = polygon[from], head = polygon[to];
-          if((from + 1) % size == to) { // a side of the hole: its open half-edge is the twin
-            const std::uintptr_t twin = halfedges[first[(2 * size - 2 - from) % size]].code;
+          if(t.closes[i] != Hole_ear::diagonal) { // a side of the hole: its open half-edge is the twin
+            const std::uintptr_t twin = halfedges[first[t.closes[i]]].code;
             link(f, i, tail, head, face_of(twin), int(twin & index_bits));
             continue;
           }
