@@ -1,0 +1,231 @@
+// Copyright (c) 2026 Delaunay_from_prediction contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Author(s): Delaunay_from_prediction founding team
+//
+// The pipeline of delaunay_from_prediction() for a prediction given as index triples: import
+// and certification, local repair, Lawson's flips seeded with the failing edges, insertion of the
+// points no face uses, and the fallback to a build from scratch.
+
+#ifndef CGAL_DELAUNAY_FROM_PREDICTION_INTERNAL_PREDICTION_PIPELINE_H
+#define CGAL_DELAUNAY_FROM_PREDICTION_INTERNAL_PREDICTION_PIPELINE_H
+
+#include <CGAL/Delaunay_from_prediction/Statistics.h>
+#include <CGAL/Delaunay_from_prediction/parameters.h>
+#include <CGAL/Delaunay_from_prediction/internal/carve_repair.h>
+#include <CGAL/Delaunay_from_prediction/internal/count_distinct_faces.h>
+#include <CGAL/Delaunay_from_prediction/internal/import_prediction.h>
+#include <CGAL/Delaunay_from_prediction/internal/flips.h>
+#include <CGAL/Delaunay_from_prediction/internal/rebuild.h>
+#include <CGAL/Delaunay_from_prediction/internal/region_repair.h>
+#include <CGAL/Delaunay_from_prediction/internal/sort_addresses.h>
+#include <CGAL/Delaunay_from_prediction/internal/spanning_tree_insertion.h>
+#include <CGAL/Delaunay_from_prediction/internal/strategy_defaults.h>
+#include <CGAL/Delaunay_from_prediction/internal/t_division_repair.h>
+#include <CGAL/Delaunay_from_prediction/internal/vertex_info.h>
+
+#include <algorithm>
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Delaunay_from_prediction {
+namespace internal {
+
+// delaunay_from_prediction() for traits with exact predicates, on the points point_at[0..n)
+// (checked finite by the caller) and the faces: import and certify the index triples (a
+// malformed face throws before `dt` changes), repair locally (carve, t-division), flip, insert
+// the unused points; a build from scratch when a stage gives up. `stats` comes with faces_in set.
+template <class PointIterator, class FaceRange, class DT>
+Statistics delaunay_from_index_triples(PointIterator point_at, std::size_t n, const FaceRange& faces,
+                                       std::size_t number_of_faces, DT& dt, std::size_t max_flips, bool screen,
+                                       Strategy strategy, std::size_t region_size, Statistics stats)
+{
+  using Vertex_handle = typename DT::Vertex_handle;
+  using Face_handle = typename DT::Face_handle;
+  const bool carve = strategy == Strategy::automatic || strategy == Strategy::carve ||
+                     strategy == Strategy::t_division;
+  const auto& gt = dt.geom_traits();
+  DT result(gt);
+  internal::Imported_prediction<DT> imported;
+  auto read_all_faces = [&] {
+    std::size_t k = 0, idx[3];
+    for(const auto& face : faces)
+      internal::read_face(face, k++, n, idx);
+  };
+  if(strategy == Strategy::rebuild || strategy == Strategy::spanning_tree) {
+    read_all_faces();
+    imported.failure = strategy == Strategy::rebuild ? internal::rebuild_requested : internal::spanning_tree_requested;
+  } else if(screen && internal::fails_sampling_screen(gt, point_at, n, faces, number_of_faces)) {
+    read_all_faces();
+    imported.failure = "most sampled faces have sampled points inside their circumcircles";
+  } else {
+    internal::Prediction_importer<DT>::run(result, point_at, n, faces, number_of_faces, imported, carve);
+  }
+
+  // The global fallback, a build from scratch: in spatial order, or, with
+  // Strategy::spanning_tree, along a spanning tree of the faces' edges (Corollaries 3.4 and
+  // 3.5). Measured at 1e6 points on predictions that fall back (points moved by 0.3 to 1
+  // spacing, 1% of the points relabelled, random triples; bench_fallback.cpp), the spatial
+  // order was as fast to 26% faster: the default.
+  auto build_from_scratch = [&](const char* why) {
+    stats.fell_back = true;
+    stats.faces_certified = 0;
+    stats.points_reinserted = 0;
+    // The rebuild counts every duplicate again: those the local repair merged before it gave
+    // up are not in the fresh triangulation's count yet.
+    stats.duplicate_points = 0;
+    result.tds().clear(); // release the partial import before building anew
+    const std::vector<std::uint32_t> grid_order = std::move(imported.points_in_grid_order);
+    imported = internal::Imported_prediction<DT>();
+    DT fresh(gt);
+    if(strategy != Strategy::spanning_tree || n >= std::size_t(internal::no_rank)) {
+      internal::build_from_scratch(fresh, point_at, n, stats, grid_order);
+    } else {
+      // Two edges of each face keep its three corners connected.
+      std::vector<std::uint32_t> ends;
+      ends.reserve(4 * number_of_faces);
+      std::size_t k = 0, idx[3];
+      for(const auto& face : faces) {
+        internal::read_face(face, k++, n, idx);
+        ends.insert(ends.end(), {std::uint32_t(idx[0]), std::uint32_t(idx[1]), std::uint32_t(idx[1]),
+                                 std::uint32_t(idx[2])});
+      }
+      internal::build_along_edges(fresh, point_at, n, ends, stats);
+    }
+    stats.fallback_reason = why;
+    dt.swap(fresh);
+    return stats;
+  };
+  stats.input_reordered = imported.reordered;
+  if(imported.failure != nullptr)
+    return build_from_scratch(imported.failure);
+  stats.edges_tested = imported.edges_tested;
+  stats.edges_not_locally_delaunay = imported.not_locally_delaunay.size();
+  stats.faces_carved = imported.faces_dropped;
+  // Small holes the import filled itself count as the first round of the local repair.
+  stats.holes_refilled = imported.holes_filled;
+  stats.carve_rounds = imported.holes_filled > 0 ? 1 : 0;
+  auto filled_by_import = [&](const void* f) {
+    return std::binary_search(imported.filled_faces.begin(), imported.filled_faces.end(), f);
+  };
+
+  // Repair. Each failing edge is not Delaunay and a flip removes one edge, so Lawson's
+  // algorithm needs at least as many flips as there are failing edges: past the budget, the
+  // flips would be wasted.
+  if(imported.not_locally_delaunay.size() > max_flips)
+    return build_from_scratch(internal::flip_budget_exhausted);
+  std::vector<std::pair<Face_handle, int>>& stack = imported.not_locally_delaunay;
+  std::vector<const void*> modified; // predicted faces changed by the repair
+  std::unique_ptr<internal::Carve_repair<DT>> repair;
+  // Tracing and filling holes costs about 2 us per boundary half-edge at 1e6 points (measured:
+  // 1% of a DT's faces deleted, 60,000 such half-edges, 0.12 s, before the import filled the
+  // small holes itself; these are the half-edges it left), a rebuild about 0.75 us per
+  // point: past n/4 of them the repair would cost more than the rebuild it avoids.
+  if(imported.needs_repair && imported.open_halfedges.size() > n / 4 + 64)
+    return build_from_scratch("too many holes for a local repair");
+  if(imported.needs_repair) {
+    // The faces kept are not a triangulation with a convex hull: fill the holes and close
+    // the hull (carve_repair.h); vertices left without a face are reinserted.
+    repair.reset(new internal::Carve_repair<DT>(result, false));
+    repair->expect_outer_cycle();
+    // Faces that overlap without sharing an edge on one side (none left out) still meet at a
+    // vertex in several fans: a vertex of a carved star may keep a closed fan elsewhere.
+    repair->expect_several_fans();
+    if(imported.faces_dropped > 0) // faces overlapped: some may still overlap unseen
+      internal::carve_vertices_wound_twice(result, *repair);
+    for(const auto& e : imported.open_halfedges)
+      repair->add_open_halfedge(e.first, e.second);
+    const char* why = repair->plan(internal::default_carve_limits(n));
+    stats.carve_rounds = (std::max)(stats.carve_rounds, repair->rounds());
+    if(why != nullptr)
+      return build_from_scratch(why);
+    repair->commit(stack);
+    if(!repair->finish_hull(stack, stats.flips))
+      return build_from_scratch("the kept faces and the filled holes do not form a triangulation");
+    std::size_t duplicates = 0;
+    repair->reinsert(stack, modified, [&](Vertex_handle v, Vertex_handle same) {
+      internal::merge_index_info_of(same, v);
+      result.tds().delete_vertex(v);
+      ++duplicates;
+    });
+    // Faces the import filled holes with are not predicted faces, carved or modified.
+    modified.erase(std::remove_if(modified.begin(), modified.end(), filled_by_import), modified.end());
+    std::size_t filled_removed = 0;
+    for(const void* f : imported.filled_faces)
+      filled_removed += repair->is_removed(f) ? 1 : 0;
+    stats.faces_carved += repair->faces_removed() - filled_removed;
+    stats.holes_refilled += repair->holes();
+    stats.points_reinserted = repair->detached().size();
+    stats.duplicate_points += duplicates;
+  }
+  std::unique_ptr<internal::Region_repair<DT>> regions;
+  if(strategy == Strategy::t_division) {
+    std::size_t duplicates = 0;
+    const char* why = internal::repair_by_regions(
+        result, regions, std::vector<Face_handle>(), true, stack, !repair, region_size, modified, stats, false,
+        [&](Vertex_handle v, Vertex_handle same) {
+          internal::merge_index_info_of(same, v);
+          result.tds().delete_vertex(v);
+          ++duplicates;
+        },
+        [&](const void* f) { return (repair && repair->is_created(f)) || filled_by_import(f); });
+    // When the t-division does not pay (or cannot be planned), `result` is untouched: a
+    // valid triangulation after the carve, which the flips finish as with Strategy::carve.
+    if(why != nullptr)
+      regions.reset();
+    stats.duplicate_points += duplicates;
+  }
+  auto made_by_repair = [&](const void* f) {
+    return (repair && repair->is_created(f)) || (regions && regions->is_created(f)) || filled_by_import(f);
+  };
+  std::vector<Face_handle> touched;
+  // Points reinserted by the t-division make a few flips each, on top of the budget.
+  const std::size_t flip_budget = max_flips + (regions ? 4 * regions->detached().size() : 0);
+  if(!internal::lawson_flip(result, stack, flip_budget, stats.flips, touched))
+    return build_from_scratch(internal::flip_budget_exhausted);
+
+  // Points no face uses: duplicates of vertices, or points to insert.
+  std::vector<std::size_t>& unused = imported.unused_points;
+  stats.points_unused = unused.size();
+  if(unused.empty() && !repair && !regions && imported.filled_faces.empty()) {
+    stats.faces_certified = result.number_of_faces() - internal::count_distinct(touched);
+  } else if(unused.empty() && !regions) {
+    // The predicted faces kept, less those the repair modified (flipped, or split by a
+    // reinserted vertex); the faces it made are not predicted faces.
+    stats.faces_certified = number_of_faces - stats.faces_carved -
+                            internal::count_distinct_addresses<typename DT::Face>(
+                                modified, touched, 0, [&](const void* f) { return !made_by_repair(f); });
+  } else {
+    // A predicted face survives if it was never flipped, is not one a repair made (the
+    // t-division may also remove faces the carve made: counted here, not subtracted), and has
+    // no new vertex (insertion recycles the faces it destroys for faces around the new
+    // vertex).
+    for(const Face_handle f : touched)
+      modified.push_back(&*f);
+    internal::sort_unique_addresses(modified);
+    std::vector<const void*> new_vertices;
+    if(!unused.empty())
+      internal::insert_points(result, point_at, unused, stats, &new_vertices);
+    std::sort(new_vertices.begin(), new_vertices.end());
+    auto is_new = [&](const Vertex_handle v) {
+      return std::binary_search(new_vertices.begin(), new_vertices.end(), static_cast<const void*>(&*v));
+    };
+    stats.faces_certified = 0;
+    for(auto f = result.finite_faces_begin(); f != result.finite_faces_end(); ++f)
+      if(!std::binary_search(modified.begin(), modified.end(), static_cast<const void*>(&*f)) &&
+         !made_by_repair(&*f) && !is_new(f->vertex(0)) && !is_new(f->vertex(1)) &&
+         !is_new(f->vertex(2)))
+        ++stats.faces_certified;
+  }
+  dt.swap(result);
+  return stats;
+}
+
+} // namespace internal
+} // namespace Delaunay_from_prediction
+} // namespace CGAL
+
+#endif // CGAL_DELAUNAY_FROM_PREDICTION_INTERNAL_PREDICTION_PIPELINE_H
