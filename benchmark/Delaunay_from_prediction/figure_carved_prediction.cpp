@@ -219,15 +219,15 @@ int main(int argc, char** argv)
   std::vector<Face_handle> touched;
   DFP::internal::Inline_flips<DT> inline_flips{DFP::internal::default_max_flips(tr.number_of_vertices()), flips,
                                                touched, untangled};
-  const char* why = DFP::internal::certify_triangulation(tr, stack, edges_tested, hull_is_convex, &bad,
-                                                         limits.max_bad_faces, &inline_flips);
-  if(why != nullptr) {
+  const DFP::internal::Outcome why = DFP::internal::certify_triangulation(
+      tr, stack, edges_tested, hull_is_convex, &bad, limits.max_bad_faces, &inline_flips);
+  if(why != DFP::internal::Outcome::ok) {
     std::size_t not_ccw = 0;
     for(auto f = tr.finite_faces_begin(); f != tr.finite_faces_end(); ++f)
       not_ccw += CGAL::orientation(f->vertex(0)->point(), f->vertex(1)->point(), f->vertex(2)->point()) ==
                          CGAL::LEFT_TURN ? 0 : 1;
     std::fprintf(stderr, "the certificate stopped: %s (%zu of %zu faces not ccw, at most %zu allowed); "
-                 "choose a smaller --sigma or another --seed\n", why, not_ccw, tr.number_of_faces(),
+                 "choose a smaller --sigma or another --seed\n", DFP::internal::fallback_reason(why), not_ccw, tr.number_of_faces(),
                  limits.max_bad_faces);
     return 2;
   }
@@ -258,9 +258,9 @@ int main(int argc, char** argv)
     }
     carve.carve_star(f->vertex(crossing));
   }
-  const char* plan_failed = bad.empty() ? nullptr : carve.plan(limits);
-  if(plan_failed != nullptr)
-    std::fprintf(stderr, "warning: the local repair gives up: %s\n", plan_failed);
+  const DFP::internal::Outcome plan_failed = bad.empty() ? DFP::internal::Outcome::ok : carve.plan(limits);
+  if(plan_failed != DFP::internal::Outcome::ok)
+    std::fprintf(stderr, "warning: the local repair gives up: %s\n", DFP::internal::fallback_reason(plan_failed));
   if(bad.empty())
     std::fprintf(stderr, "warning: the untangling flips repaired every face: nothing is carved\n");
 
@@ -270,7 +270,7 @@ int main(int argc, char** argv)
   std::set<std::size_t> detached;
   for(const Vertex_handle v : carve.detached())
     detached.insert(v->info());
-  const bool carved_any = !bad.empty() && plan_failed == nullptr;
+  const bool carved_any = !bad.empty() && plan_failed == DFP::internal::Outcome::ok;
   auto is_carved = [&](Face_handle f) { return carved_any && carve.is_removed(f); };
 
   // 3. The figure.

@@ -13,18 +13,13 @@
 #include <CGAL/Delaunay_from_prediction/Statistics.h>
 #include <CGAL/Delaunay_from_prediction/parameters.h>
 #include <CGAL/Delaunay_from_prediction/internal/carve_in_place.h>
-#include <CGAL/Delaunay_from_prediction/internal/carve_repair.h>
-#include <CGAL/Delaunay_from_prediction/internal/count_distinct_faces.h>
-#include <CGAL/Delaunay_from_prediction/internal/hierarchy.h>
-#include <CGAL/Delaunay_from_prediction/internal/import_prediction.h>
-#include <CGAL/Delaunay_from_prediction/internal/input_check.h>
 #include <CGAL/Delaunay_from_prediction/internal/flips.h>
+#include <CGAL/Delaunay_from_prediction/internal/hierarchy.h>
+#include <CGAL/Delaunay_from_prediction/internal/input_check.h>
+#include <CGAL/Delaunay_from_prediction/internal/outcome.h>
 #include <CGAL/Delaunay_from_prediction/internal/prediction_pipeline.h>
 #include <CGAL/Delaunay_from_prediction/internal/rebuild.h>
-#include <CGAL/Delaunay_from_prediction/internal/region_repair.h>
 #include <CGAL/Delaunay_from_prediction/internal/sort_addresses.h>
-#include <CGAL/Delaunay_from_prediction/internal/spanning_tree_insertion.h>
-#include <CGAL/Delaunay_from_prediction/internal/strategy_defaults.h>
 #include <CGAL/Delaunay_from_prediction/internal/t_division_repair.h>
 #include <CGAL/Delaunay_from_prediction/internal/tds_certify.h>
 
@@ -212,7 +207,7 @@ Statistics make_delaunay(Triangulation& tr, const NamedParameters& np = paramete
   // cycle or corrupt; the faces are rebuilt around the same vertices, decided by exact predicates.
   if constexpr(internal::decides_by_exact_predicates<typename Triangulation::Geom_traits>::value) {
     stats.fell_back = true;
-    stats.fallback_reason = internal::inexact_predicates;
+    stats.fallback_reason = internal::fallback_reason(internal::Outcome::inexact_predicates);
     internal::rebuild_keeping_vertices(tr, stats); // leaves `tr` as it is when it throws
     return stats;
   }
@@ -233,18 +228,18 @@ Statistics make_delaunay(Triangulation& tr, const NamedParameters& np = paramete
   // Lawson's flips start during certification, except for the t-division, which plans its
   // regions from the edges that fail in the prediction as given.
   internal::Inline_flips<Triangulation> inline_flips{max_flips, stats.flips, touched, flips_before_carve};
-  const char* why = strategy == Strategy::rebuild || strategy == Strategy::spanning_tree
-                        ? internal::rebuild_requested
+  internal::Outcome why = strategy == Strategy::rebuild || strategy == Strategy::spanning_tree
+                        ? internal::Outcome::rebuild_requested
                         : internal::certify_triangulation(tr, stack, stats.edges_tested, hull_is_convex,
                                                           carve || divide ? &bad : nullptr, max_bad,
                                                           divide ? nullptr : &inline_flips);
-  if(why == nullptr)
+  if(why == internal::Outcome::ok)
     stats.edges_not_locally_delaunay = divide ? stack.size() : inline_flips.edges_failing;
   // Lawson needs at least a flip per failing edge: past the budget, the flips are wasted.
-  if(why == nullptr && stats.edges_not_locally_delaunay > max_flips)
-    why = internal::flip_budget_exhausted;
+  if(why == internal::Outcome::ok && stats.edges_not_locally_delaunay > max_flips)
+    why = internal::Outcome::flip_budget_exhausted;
   // Faces that are not ccw: first untangled by flips, then the rest carved (carve_repair.h).
-  if(why == nullptr && divide) {
+  if(why == internal::Outcome::ok && divide) {
     // Theorem 2.1 (region_repair.h). If it does not pay or cannot be planned, `tr` is
     // untouched and the carve takes over; if the flip budget runs out, `tr` is a valid
     // triangulation of the same vertices, rebuilt below.
@@ -254,7 +249,7 @@ Statistics make_delaunay(Triangulation& tr, const NamedParameters& np = paramete
                                       stats, true, [](auto, auto) {
                                         CGAL_assertion_msg(false, "duplicates were ruled out before");
                                       });
-    if(why == nullptr) {
+    if(why == internal::Outcome::ok) {
       // Reinserted points make a few flips each, as in any incremental construction: they
       // count on top of the budget for the repair of the prediction.
       if(internal::lawson_flip(tr, stack, max_flips + 4 * regions->detached().size(), stats.flips, touched)) {
@@ -263,38 +258,38 @@ Statistics make_delaunay(Triangulation& tr, const NamedParameters& np = paramete
                                     modified, touched, 0, [&](const void* f) { return !regions->is_created(f); });
         return stats;
       }
-      why = internal::flip_budget_exhausted;
+      why = internal::Outcome::flip_budget_exhausted;
     } else {
       // Not worth dividing, or no plan: `tr` is untouched, the carve below takes over.
-      why = nullptr;
+      why = internal::Outcome::ok;
     }
   }
-  if(why == nullptr && !bad.empty()) {
+  if(why == internal::Outcome::ok && !bad.empty()) {
     const std::size_t inline_flipped = flips_before_carve.size();
     internal::untangle_by_flips(tr, bad, stack, flips_before_carve, touched);
     stats.flips += flips_before_carve.size() - inline_flipped;
     if(!bad.empty()) {
       why = internal::carve_in_place(tr, bad, stack, touched, flips_before_carve, max_flips, stats);
-      if(why == nullptr)
+      if(why == internal::Outcome::ok)
         return stats;
-      if(why == internal::flip_budget_exhausted)
+      if(why == internal::Outcome::flip_budget_exhausted)
         flips_before_carve.clear(); // the carve was committed: a triangulation again, nothing to undo
     }
   }
   std::vector<const void*> hull_faces; // finite faces made by convexify_hull
-  if(why == nullptr && !hull_is_convex &&
+  if(why == internal::Outcome::ok && !hull_is_convex &&
      !internal::convexify_hull(tr, stack, hull_faces, stats.flips))
-    why = "the hull is not a convex polygon wound once, and no flip of hull edges makes it one";
-  if(why == nullptr) {
+    why = internal::Outcome::hull_not_convex;
+  if(why == internal::Outcome::ok) {
     if(internal::lawson_flip(tr, stack, max_flips, stats.flips, touched)) {
       stats.faces_certified = stats.faces_in - internal::count_distinct(touched, hull_faces);
       return stats;
     }
-    why = internal::flip_budget_exhausted;
+    why = internal::Outcome::flip_budget_exhausted;
     flips_before_carve.clear(); // a triangulation again: no duplicates, nothing to undo
   }
   stats.fell_back = true;
-  stats.fallback_reason = why;
+  stats.fallback_reason = internal::fallback_reason(why);
   stats.faces_certified = 0;
   stats.points_reinserted = 0;
   try {

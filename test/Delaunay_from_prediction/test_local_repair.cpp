@@ -29,9 +29,6 @@
 // triangulation); Epeck. Every group runs in a child process with a time limit, so a crash or
 // an endless loop is a failure of that group only.
 
-// No budget for Strategy::t_division: reach its repair whatever the damage.
-#define CGAL_DELAUNAY_FROM_PREDICTION_T_DIVISION_BUDGET(n) ((void)(n), std::size_t(-1) / 4)
-
 #include <CGAL/Delaunay_from_prediction_2.h> // first: the header is self-contained
 
 #include "test_util.h"
@@ -43,6 +40,7 @@
 
 #include <csignal>
 #include <cstdint>
+#include <limits>
 #include <memory>
 #include <functional>
 
@@ -128,8 +126,8 @@ void check_strategy(Mode m, const DFP::Statistics& s, const Expect& e, std::size
     } else {
       // With exact predicates the fill always fits (region_repair.h): a fallback is for a
       // budget or a degenerate input, never for an inconsistency.
-      const std::string why = s.fallback_reason;
-      DFP_CHECK_MSG(why.find("do not fit") == std::string::npos && why.find("same vertices") == std::string::npos,
+      DFP_CHECK_MSG(!reason_is(s, DFP::internal::Outcome::kept_faces_do_not_fit) &&
+                        !reason_is(s, DFP::internal::Outcome::kept_faces_repeated),
                     describe(s));
     }
   } else if(m == Mode::flips) {
@@ -824,7 +822,7 @@ void euler_early_exit()
     const Faces kept = DFP::delete_faces(DFP::delaunay_triangles(points), 0.15, 6002);
     DT dt;
     const DFP::Statistics s = DFP::delaunay_from_prediction(points, kept, dt);
-    DFP_CHECK_MSG(s.fell_back && std::string(s.fallback_reason) == "too many holes for a local repair", describe(s));
+    DFP_CHECK_MSG(s.fell_back && reason_is(s, DFP::internal::Outcome::too_many_holes), describe(s));
     DFP_CHECK_MSG(!s.input_reordered, describe(s)); // stopped before the spatial ordering
     check_is_cgal_delaunay(dt, points);
   }
@@ -911,9 +909,9 @@ void import_fills_small_holes()
     DT imported;
     DFP::internal::Imported_prediction<DT> out;
     DFP::internal::Prediction_importer<DT>::run(imported, points.begin(), points.size(), kept, kept.size(), out, true);
-    DFP_CHECK_MSG(out.failure == nullptr && !out.needs_repair && out.holes_filled == deleted &&
+    DFP_CHECK_MSG(out.failure == DFP::internal::Outcome::ok && !out.needs_repair && out.holes_filled == deleted &&
                       out.filled_faces.size() == deleted && out.not_locally_delaunay.empty(),
-                  (out.failure ? out.failure : "") << " needs_repair " << out.needs_repair << ", " << out.holes_filled
+                  DFP::internal::fallback_reason(out.failure) << " needs_repair " << out.needs_repair << ", " << out.holes_filled
                                                    << " holes filled, " << deleted << " deleted");
     DFP_CHECK(imported.is_valid());
     DT dt;
@@ -1072,6 +1070,8 @@ void t_division_small_random_cases()
 
 int main()
 {
+  // No budget for Strategy::t_division: reach its repair whatever the damage.
+  DFP::internal::t_division_budget_factor() = std::numeric_limits<double>::infinity();
   const XYs uniform_5000 = uniform_xy(5000, 1001);
   {
     Scope scope("Epick");

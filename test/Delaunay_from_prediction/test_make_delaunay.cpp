@@ -536,16 +536,16 @@ void test_flip_log_survives_rollback(CGAL::Random& rng)
     bool hull_is_convex = false;
     I::Inline_flips<Tr> inline_flips{tr.number_of_vertices(), flips, touched, log};
     DFP_CHECK(I::certify_triangulation(tr, stack, tested, hull_is_convex, &bad, tr.number_of_faces(),
-                                       &inline_flips) == nullptr);
+                                       &inline_flips) == I::Outcome::ok);
     DFP_CHECK(flips > 0 && log.size() == flips);
     I::untangle_by_flips(tr, bad, stack, log, touched);
     DFP_CHECK(!bad.empty());
     I::Carve_repair<Tr> carve(tr, true);
     for(const Tr::Face_handle f : bad)
       carve.carve_star(f->vertex(round % 3));
-    const char* why = carve.plan(I::default_carve_limits(tr.number_of_vertices()));
-    DFP_CHECK_MSG(why == nullptr, why);
-    if(why != nullptr)
+    const I::Outcome why = carve.plan(I::default_carve_limits(tr.number_of_vertices()));
+    DFP_CHECK_MSG(why == I::Outcome::ok, I::fallback_reason(why));
+    if(why != I::Outcome::ok)
       continue;
     carve.commit(stack);
     for(const auto& flip : log)

@@ -349,7 +349,7 @@ void faces_with_crossings()
       check_is_cgal_delaunay(dt, points);
       check_statistics(st, crossing, points, dt);
       DFP_CHECK(st.fell_back);
-      DFP_CHECK_MSG(std::string(st.fallback_reason) == "the spanning_tree strategy was chosen", st.fallback_reason);
+      DFP_CHECK_MSG(reason_is(st, DFP::internal::Outcome::spanning_tree_requested), st.fallback_reason);
       DFP_CHECK_MSG(st.points_located > n / 2, st.points_located);
       DFP_CHECK_MSG(st.faces_visited < 6 * st.points_located, st.faces_visited << " faces for " << st.points_located);
     }

@@ -641,6 +641,13 @@ inline Faces random_triples(std::size_t n, std::size_t m, CGAL::Random& rng)
 
 // True if the statistics show that a prediction was not used as it is: rebuilt from scratch,
 // or repaired locally (faces carved, holes refilled, or at least one round of the repair).
+// Whether the call fell back for this outcome, compared with the package's own list of
+// reasons: rewording a reason cannot make a test pass or fail vacuously.
+inline bool reason_is(const DFP::Statistics& s, DFP::internal::Outcome outcome)
+{
+  return std::string(s.fallback_reason) == DFP::internal::fallback_reason(outcome);
+}
+
 inline bool repaired_or_rebuilt(const DFP::Statistics& s)
 {
   return s.fell_back || s.faces_carved > 0 || s.holes_refilled > 0 || s.carve_rounds > 0;

@@ -13,13 +13,13 @@
 #include <CGAL/Delaunay_from_prediction/Statistics.h>
 #include <CGAL/Delaunay_from_prediction/parameters.h>
 #include <CGAL/Delaunay_from_prediction/internal/hierarchy.h>
+#include <CGAL/Delaunay_from_prediction/internal/outcome.h>
 #include <CGAL/Delaunay_from_prediction/internal/random.h>
 #include <CGAL/Delaunay_from_prediction/internal/randomized_split.h>
 #include <CGAL/Delaunay_from_prediction/internal/rebuild.h>
 #include <CGAL/Delaunay_from_prediction/internal/spanning_tree_insertion.h>
-#include <CGAL/Delaunay_from_prediction/internal/spatial_coherence.h>
 #include <CGAL/Delaunay_from_prediction/internal/spatial_order.h>
-#include <CGAL/Delaunay_from_prediction/internal/vertex_info_copy.h>
+#include <CGAL/Delaunay_from_prediction/internal/vertex_info.h>
 
 #include <CGAL/Delaunay_triangulation_2.h>
 #include <CGAL/Triangulation_data_structure_2.h>
@@ -155,7 +155,7 @@ Statistics split_delaunay(const DT& dt, IsInFirst is_in_first, DT1& dt1, DT2& dt
     insert_part(dt1, 0);
     insert_part(dt2, 1);
     stats.fell_back = true;
-    stats.fallback_reason = internal::inexact_predicates;
+    stats.fallback_reason = internal::fallback_reason(internal::Outcome::inexact_predicates);
     return stats;
   }
   std::vector<typename DT1::Vertex_handle> in_first(method == Split_method::randomized ? n : 0);

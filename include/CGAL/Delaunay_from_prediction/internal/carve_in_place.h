@@ -12,8 +12,8 @@
 #include <CGAL/Delaunay_from_prediction/internal/carve_repair.h>
 #include <CGAL/Delaunay_from_prediction/internal/duplicate_vertices.h>
 #include <CGAL/Delaunay_from_prediction/internal/flips.h>
+#include <CGAL/Delaunay_from_prediction/internal/outcome.h>
 #include <CGAL/Delaunay_from_prediction/internal/sort_addresses.h>
-#include <CGAL/Delaunay_from_prediction/internal/strategy_defaults.h>
 
 #include <CGAL/assertions.h>
 #include <CGAL/number_utils.h>
@@ -29,12 +29,12 @@ namespace internal {
 
 // make_delaunay's local repair of a triangulation with faces that are not counterclockwise
 // (`bad`): carves the stars of their vertices, fills the holes, reinserts those vertices
-// (same objects), then flips. Returns null on success; otherwise why not, with `tr` either
+// (same objects), then flips. Returns Outcome::ok on success; otherwise why not, with `tr` either
 // as it was (the carve did not fit the budget, or the result would not be a triangulation:
 // rolled back) or a valid triangulation of the same vertices (the flip budget ran out).
 // Never throws for duplicates: it returns first, and the caller's rebuild names them.
 template <class Triangulation>
-const char* carve_in_place(Triangulation& tr, const std::vector<typename Triangulation::Face_handle>& bad,
+Outcome carve_in_place(Triangulation& tr, const std::vector<typename Triangulation::Face_handle>& bad,
                            std::vector<std::pair<typename Triangulation::Face_handle, int>>& stack,
                            std::vector<typename Triangulation::Face_handle>& touched,
                            Flip_log<Triangulation>& flip_log, std::size_t max_flips, Statistics& stats)
@@ -62,16 +62,16 @@ const char* carve_in_place(Triangulation& tr, const std::vector<typename Triangu
     }
     carve.carve_star(f->vertex(crossing));
   }
-  const char* why = carve.plan(default_carve_limits(tr.number_of_vertices()));
+  Outcome why = carve.plan(default_carve_limits(tr.number_of_vertices()));
   stats.carve_rounds = carve.rounds();
-  if(why != nullptr)
+  if(why != Outcome::ok)
     return why;
   if(has_duplicate_of(tr, carve.detached()))
-    return "two vertices are at the same point";
+    return Outcome::duplicate_points;
   carve.commit(stack);
   if(!carve.finish_hull(stack, stats.flips)) {
     carve.rollback(flip_log); // the flips before the carve can still be undone
-    return "the kept faces and the filled holes do not form a triangulation";
+    return Outcome::carve_not_a_triangulation;
   }
   std::vector<const void*> modified;
   carve.reinsert(stack, modified, [](auto, auto) {
@@ -81,14 +81,14 @@ const char* carve_in_place(Triangulation& tr, const std::vector<typename Triangu
   stats.holes_refilled = carve.holes();
   stats.points_reinserted = carve.detached().size();
   if(!lawson_flip(tr, stack, max_flips, stats.flips, touched))
-    return flip_budget_exhausted;
+    return Outcome::flip_budget_exhausted;
   // The predicted faces modified: those flipped (before the carve or after it) that were
   // neither carved nor made by the repair, and those insertion split.
   stats.faces_certified =
       stats.faces_in - stats.faces_carved -
       count_distinct_addresses<typename Triangulation::Face>(
           modified, touched, 0, [&](const void* f) { return !carve.is_removed(f) && !carve.is_created(f); });
-  return nullptr;
+  return Outcome::ok;
 }
 
 } // namespace internal

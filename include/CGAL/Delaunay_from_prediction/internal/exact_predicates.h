@@ -55,9 +55,6 @@ struct decides_by_exact_predicates
                                        std::is_same<typename Gt::Point_2,
                                                     typename Kernel_traits<typename Gt::Point_2>::Kernel::Point_2>::value> {};
 
-// The reason recorded in Statistics::fallback_reason when the traits are not exact.
-inline constexpr const char* inexact_predicates =
-    "the traits' predicates are not exact: the faces are decided by exact predicates on double coordinates";
 
 } // namespace internal
 } // namespace Delaunay_from_prediction

@@ -16,6 +16,8 @@
 #include <cmath>
 #include <cstddef>
 #include <limits>
+#include <utility>
+#include <vector>
 
 namespace CGAL {
 namespace Delaunay_from_prediction {
@@ -113,6 +115,29 @@ struct Grid_axis
     return std::size_t(f > 0 ? (std::min)(f, last) : 0);
   }
 };
+
+// Whether pairs of points (consecutive points of an order, the ends of edges) are about as
+// close as the points' spacing, judged on a sample: the median squared distance of the 255
+// pairs of point indices pair_at(0..254), and the area per point of the bounding box of the
+// n points, both on coordinates scaled by unit_scale() of the box (neither overflows).
+struct Spacing_sample
+{
+  double median_squared_distance, area_per_point;
+};
+template <class PointAt, class PairAt>
+Spacing_sample sample_spacing(std::size_t n, PointAt point_at, PairAt pair_at)
+{
+  const Box box = bounding_box(n, point_at);
+  const double scale = unit_scale(box);
+  std::vector<double> squared(255);
+  for(std::size_t s = 0; s < squared.size(); ++s) {
+    const std::pair<std::size_t, std::size_t> ends = pair_at(s);
+    squared[s] = squared_distance_in_double(point_at(ends.first), point_at(ends.second), scale);
+  }
+  std::nth_element(squared.begin(), squared.begin() + 127, squared.end());
+  return Spacing_sample{squared[127],
+                        (box.xmax * scale - box.xmin * scale) * (box.ymax * scale - box.ymin * scale) / double(n)};
+}
 
 } // namespace internal
 } // namespace Delaunay_from_prediction

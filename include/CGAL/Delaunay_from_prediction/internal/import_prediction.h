@@ -23,6 +23,7 @@
 #include <CGAL/Delaunay_from_prediction/internal/hash_map.h>
 #include <CGAL/Delaunay_from_prediction/internal/hole_tracing.h>
 #include <CGAL/Delaunay_from_prediction/internal/input_check.h>
+#include <CGAL/Delaunay_from_prediction/internal/outcome.h>
 #include <CGAL/Delaunay_from_prediction/internal/predicates.h>
 #include <CGAL/Delaunay_from_prediction/internal/random.h>
 #include <CGAL/Delaunay_from_prediction/internal/spatial_order.h>
@@ -132,7 +133,7 @@ struct Imported_prediction
   // The caller's point indices in the grid order of the reordering, when it renumbered the
   // points (else empty): a rebuild after the import starts from it.
   std::vector<std::uint32_t> points_in_grid_order;
-  const char* failure = nullptr; // why the faces are not a triangulation; null if they are
+  Outcome failure = Outcome::ok; // why the faces are not a triangulation
 };
 
 // Half-edges waiting for their twin, filed under the edge's smaller endpoint u in a ring of
@@ -278,18 +279,18 @@ public:
     Prediction_importer importer(tr, n, number_of_faces, out, tolerant);
     std::vector<std::uint32_t> triples;
     read_faces(faces, n, number_of_faces, triples, out.failure);
-    if(out.failure != nullptr)
+    if(out.failure != Outcome::ok)
       return;
     if(number_of_faces == 0) {
-      out.failure = "there are no faces";
+      out.failure = Outcome::no_faces;
       return;
     }
     // Faces missing, told by counting (see missing_faces_exceed()): past n/8 the local repair
     // would not pay; without it, past n/64 the faces cannot be a triangulation (any excess
     // shows that, the margin keeps the count off the common case of about 2n faces).
     if(missing_faces_exceed(points, n, triples, tolerant ? n / 8 + 16 : n / 64 + 16)) {
-      out.failure = tolerant ? "too many holes for a local repair"
-                             : "the faces leave holes, or do not form a triangulation of their vertices";
+      out.failure = tolerant ? Outcome::too_many_holes
+                             : Outcome::holes_or_not_a_triangulation;
       return;
     }
     Spatial_order order;
@@ -316,14 +317,14 @@ private:
   // Validates every face (throws Invalid_prediction) into 32-bit triples.
   template <class FaceRange>
   static void read_faces(const FaceRange& faces, std::size_t n, std::size_t number_of_faces,
-                         std::vector<std::uint32_t>& triples, const char*& failure)
+                         std::vector<std::uint32_t>& triples, Outcome& failure)
   {
     // 32-bit indices: at that size a CGAL triangulation needs hundreds of GB anyway.
     const bool fits = n < none && number_of_faces < (std::size_t(1) << 31);
     if(fits)
       triples.resize(3 * number_of_faces);
     else
-      failure = "too many points or faces for 32-bit indices";
+      failure = Outcome::too_many_indices;
     std::uint32_t* out = triples.data();
     std::size_t k = 0;
     for(const auto& face : faces) {
@@ -480,8 +481,8 @@ private:
     // of the faces on, as soon as the hole boundaries seen so far, extrapolated to all the
     // faces, exceed 1.25 times that. Measured at 1e6 points with 1% of the faces deleted, the
     // open half-edges grow linearly from a frontier of about sqrt(n) (8 sqrt(n) is
-    // subtracted); with 10% deleted the import now stops after about 5% of the faces instead
-    // of half of them.
+    // subtracted); with 10% deleted the import stops after about 5% of the faces, where the
+    // fixed limit alone lets it run through half of them.
     const std::size_t root = std::size_t(std::sqrt(double(n_)));
     const std::size_t max_open = n_ / 4 + 64 + 32 * root;
     for(std::size_t k = 0; k < number_of_faces_; ++k, t += 3) {
@@ -489,15 +490,15 @@ private:
          (open.size() > max_open ||
           (32 * k >= number_of_faces_ && open.size() > 8 * root &&
            double(open.size() - 8 * root) * double(number_of_faces_) > 1.25 * double(max_open) * double(k)))) {
-        out_.failure = "too many holes for a local repair";
+        out_.failure = Outcome::too_many_holes;
         return;
       }
       // The same extrapolation for the faces left out: with 1% of the points of 1e6
-      // relabelled (faces crossing others), the import passed the limit near the end, 0.2 s
-      // in (the call 1.46 times CGAL's build); now it stops after a 32nd of the faces.
+      // relabelled (faces crossing others) it stops after a 32nd of the faces, where the
+      // fixed limit alone is passed near the end, 0.2 s in (the call 1.46 times CGAL's build).
       if(tolerant_ && (k & 4095) == 0 && 32 * k >= number_of_faces_ &&
          double(out_.faces_dropped) * double(number_of_faces_) > 1.25 * double(max_dropped()) * double(k)) {
-        out_.failure = "too many faces lie on the same side of an edge as others";
+        out_.failure = Outcome::too_many_overlapping_faces;
         return;
       }
       std::uint32_t v[3] = {t[0], t[1], t[2]};
@@ -507,10 +508,10 @@ private:
         if(tolerant_ && ++out_.faces_dropped <= max_dropped())
           continue;
         if(tolerant_) {
-          out_.failure = "too many faces are degenerate";
+          out_.failure = Outcome::too_many_degenerate_faces;
           return;
         }
-        out_.failure = "a face is degenerate (its points are collinear or equal)";
+        out_.failure = Outcome::degenerate_face;
         return;
       }
       if(o == NEGATIVE)
@@ -545,7 +546,7 @@ private:
           continue;
         if(((twin ^ code) & tail_is_smaller_bit) == 0) {
           if(!tolerant_) {
-            out_.failure = "two faces lie on the same side of an edge (overlapping or repeated faces)";
+            out_.failure = Outcome::overlapping_faces;
             return;
           }
           // Leave this face out: reopen the twin just taken, undo the half-edges done.
@@ -554,7 +555,7 @@ private:
           drop_face(f, v, i, created, w, open, tests_before);
           f_dropped = true;
           if(out_.faces_dropped > max_dropped()) {
-            out_.failure = "too many faces lie on the same side of an edge as others";
+            out_.failure = Outcome::too_many_overlapping_faces;
             return;
           }
           break;
@@ -591,12 +592,12 @@ private:
       fill_small_holes(points, boundary);
     const std::size_t kept = number_of_faces_ - out_.faces_dropped + out_.filled_faces.size();
     const long long hull_size = 2 * (long long)(out_.vertices_used) - 2 - (long long)(kept);
-    const char* why = nullptr;
+    Outcome why = Outcome::ok;
     if(hull_size < 3 || boundary.size() != std::size_t(hull_size))
-      why = "the faces leave holes, or do not form a triangulation of their vertices";
+      why = Outcome::holes_or_not_a_triangulation;
     else
       why = close_hull(points, boundary);
-    if(why == nullptr)
+    if(why == Outcome::ok)
       return;
     if(!tolerant_) {
       out_.failure = why;
@@ -829,12 +830,12 @@ private:
   // Links the unpaired half-edges into one cycle, checks that it is a convex polygon wound
   // once counterclockwise, and closes the triangulation with the infinite faces.
   template <class PointIterator>
-  const char* close_hull(PointIterator points, const std::vector<Boundary_halfedge>& hull)
+  Outcome close_hull(PointIterator points, const std::vector<Boundary_halfedge>& hull)
   {
     const std::size_t m = hull.size();
     for(std::size_t k = 1; k < m; ++k)
       if(hull[k].tail == hull[k - 1].tail) {
-        return "the boundary of the faces pinches at a vertex (not a single polygon)";
+        return Outcome::boundary_pinched;
       }
     std::vector<std::size_t> cycle; // positions in `hull`, in ccw order
     cycle.reserve(m);
@@ -844,17 +845,17 @@ private:
       const Boundary_halfedge probe{hull[at].head, 0, 0};
       const auto next = std::lower_bound(hull.begin(), hull.end(), probe);
       if(next == hull.end() || next->tail != probe.tail) {
-        return "the boundary of the faces is not closed";
+        return Outcome::boundary_not_closed;
       }
       at = std::size_t(next - hull.begin());
       if(at == 0 && k + 1 < m) {
-        return "the boundary of the faces has several components (holes)";
+        return Outcome::boundary_with_holes;
       }
     }
     if(at != 0 || !is_convex_ccw_cycle(tr_.geom_traits(), m, [&](std::size_t k) -> const Point& {
          return points[hull[cycle[k]].tail];
        })) {
-      return "the boundary of the faces is not a convex polygon wound once";
+      return Outcome::boundary_not_convex;
     }
     // The face outside hull half-edge u->v is (v, u, infinite); consecutive ones share the
     // edge (v, infinite), opposite u in the first and opposite w in the second.
@@ -871,7 +872,7 @@ private:
     for(std::size_t k = 0; k < m; ++k)
       tds.set_adjacency(outside[k], 1, outside[(k + 1) % m], 0);
     infinite->set_face(outside[0]);
-    return nullptr;
+    return Outcome::ok;
   }
 
   // Faces the tolerant import may leave out before it gives up: each one usually costs the

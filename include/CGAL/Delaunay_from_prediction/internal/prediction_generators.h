@@ -10,10 +10,10 @@
 #define CGAL_DELAUNAY_FROM_PREDICTION_INTERNAL_PREDICTION_GENERATORS_H
 
 #include <CGAL/Delaunay_from_prediction/Statistics.h>
-#include <CGAL/Delaunay_from_prediction/internal/input_check.h>
 #include <CGAL/Delaunay_from_prediction/internal/flips.h>
-#include <CGAL/Delaunay_from_prediction/internal/prediction_measures.h>
+#include <CGAL/Delaunay_from_prediction/internal/input_check.h>
 #include <CGAL/Delaunay_from_prediction/internal/predicates.h>
+#include <CGAL/Delaunay_from_prediction/internal/prediction_measures.h>
 #include <CGAL/Delaunay_from_prediction/internal/random.h>
 #include <CGAL/Delaunay_from_prediction/internal/rebuild.h>
 

@@ -10,8 +10,9 @@
 #define CGAL_DELAUNAY_FROM_PREDICTION_INTERNAL_PREDICTION_MEASURES_H
 
 #include <CGAL/Delaunay_from_prediction/Statistics.h>
-#include <CGAL/Delaunay_from_prediction/internal/input_check.h>
 #include <CGAL/Delaunay_from_prediction/internal/flips.h>
+#include <CGAL/Delaunay_from_prediction/internal/input_check.h>
+#include <CGAL/Delaunay_from_prediction/internal/outcome.h>
 #include <CGAL/Delaunay_from_prediction/internal/predicates.h>
 
 #include <CGAL/Delaunay_triangulation_2.h>
@@ -392,7 +393,7 @@ void measure_prediction(Measures& m, PointIterator point_at, std::size_t n, cons
   // Is G a triangulation of P? The import certified it (orientation, twins, convex hull wound
   // once) unless it failed; what it tolerates (unused points) is checked here.
   const bool out_of_budget =
-      stats.fell_back && std::string(stats.fallback_reason) == internal::flip_budget_exhausted;
+      stats.fell_back && stats.fallback_reason == fallback_reason(Outcome::flip_budget_exhausted);
   if(n < 3 || m.faces == 0)
     m.not_a_triangulation = "fewer than three points or no face";
   else if(duplicates > 0)

@@ -12,14 +12,13 @@
 #include <CGAL/Delaunay_from_prediction/Statistics.h>
 #include <CGAL/Delaunay_from_prediction/parameters.h>
 #include <CGAL/Delaunay_from_prediction/internal/carve_repair.h>
-#include <CGAL/Delaunay_from_prediction/internal/count_distinct_faces.h>
-#include <CGAL/Delaunay_from_prediction/internal/import_prediction.h>
 #include <CGAL/Delaunay_from_prediction/internal/flips.h>
+#include <CGAL/Delaunay_from_prediction/internal/import_prediction.h>
+#include <CGAL/Delaunay_from_prediction/internal/outcome.h>
 #include <CGAL/Delaunay_from_prediction/internal/rebuild.h>
 #include <CGAL/Delaunay_from_prediction/internal/region_repair.h>
 #include <CGAL/Delaunay_from_prediction/internal/sort_addresses.h>
 #include <CGAL/Delaunay_from_prediction/internal/spanning_tree_insertion.h>
-#include <CGAL/Delaunay_from_prediction/internal/strategy_defaults.h>
 #include <CGAL/Delaunay_from_prediction/internal/t_division_repair.h>
 #include <CGAL/Delaunay_from_prediction/internal/vertex_info.h>
 
@@ -57,10 +56,10 @@ Statistics delaunay_from_index_triples(PointIterator point_at, std::size_t n, co
   };
   if(strategy == Strategy::rebuild || strategy == Strategy::spanning_tree) {
     read_all_faces();
-    imported.failure = strategy == Strategy::rebuild ? internal::rebuild_requested : internal::spanning_tree_requested;
+    imported.failure = strategy == Strategy::rebuild ? Outcome::rebuild_requested : Outcome::spanning_tree_requested;
   } else if(screen && internal::fails_sampling_screen(gt, point_at, n, faces, number_of_faces)) {
     read_all_faces();
-    imported.failure = "most sampled faces have sampled points inside their circumcircles";
+    imported.failure = Outcome::screen_rejected;
   } else {
     internal::Prediction_importer<DT>::run(result, point_at, n, faces, number_of_faces, imported, carve);
   }
@@ -70,7 +69,7 @@ Statistics delaunay_from_index_triples(PointIterator point_at, std::size_t n, co
   // 3.5). Measured at 1e6 points on predictions that fall back (points moved by 0.3 to 1
   // spacing, 1% of the points relabelled, random triples; bench_fallback.cpp), the spatial
   // order was as fast to 26% faster: the default.
-  auto build_from_scratch = [&](const char* why) {
+  auto build_from_scratch = [&](internal::Outcome why) {
     stats.fell_back = true;
     stats.faces_certified = 0;
     stats.points_reinserted = 0;
@@ -95,12 +94,12 @@ Statistics delaunay_from_index_triples(PointIterator point_at, std::size_t n, co
       }
       internal::build_along_edges(fresh, point_at, n, ends, stats);
     }
-    stats.fallback_reason = why;
+    stats.fallback_reason = internal::fallback_reason(why);
     dt.swap(fresh);
     return stats;
   };
   stats.input_reordered = imported.reordered;
-  if(imported.failure != nullptr)
+  if(imported.failure != Outcome::ok)
     return build_from_scratch(imported.failure);
   stats.edges_tested = imported.edges_tested;
   stats.edges_not_locally_delaunay = imported.not_locally_delaunay.size();
@@ -116,7 +115,7 @@ Statistics delaunay_from_index_triples(PointIterator point_at, std::size_t n, co
   // algorithm needs at least as many flips as there are failing edges: past the budget, the
   // flips would be wasted.
   if(imported.not_locally_delaunay.size() > max_flips)
-    return build_from_scratch(internal::flip_budget_exhausted);
+    return build_from_scratch(Outcome::flip_budget_exhausted);
   std::vector<std::pair<Face_handle, int>>& stack = imported.not_locally_delaunay;
   std::vector<const void*> modified; // predicted faces changed by the repair
   std::unique_ptr<internal::Carve_repair<DT>> repair;
@@ -125,7 +124,7 @@ Statistics delaunay_from_index_triples(PointIterator point_at, std::size_t n, co
   // small holes itself; these are the half-edges it left), a rebuild about 0.75 us per
   // point: past n/4 of them the repair would cost more than the rebuild it avoids.
   if(imported.needs_repair && imported.open_halfedges.size() > n / 4 + 64)
-    return build_from_scratch("too many holes for a local repair");
+    return build_from_scratch(Outcome::too_many_holes);
   if(imported.needs_repair) {
     // The faces kept are not a triangulation with a convex hull: fill the holes and close
     // the hull (carve_repair.h); vertices left without a face are reinserted.
@@ -138,13 +137,13 @@ Statistics delaunay_from_index_triples(PointIterator point_at, std::size_t n, co
       internal::carve_vertices_wound_twice(result, *repair);
     for(const auto& e : imported.open_halfedges)
       repair->add_open_halfedge(e.first, e.second);
-    const char* why = repair->plan(internal::default_carve_limits(n));
+    const Outcome why = repair->plan(internal::default_carve_limits(n));
     stats.carve_rounds = (std::max)(stats.carve_rounds, repair->rounds());
-    if(why != nullptr)
+    if(why != Outcome::ok)
       return build_from_scratch(why);
     repair->commit(stack);
     if(!repair->finish_hull(stack, stats.flips))
-      return build_from_scratch("the kept faces and the filled holes do not form a triangulation");
+      return build_from_scratch(Outcome::carve_not_a_triangulation);
     std::size_t duplicates = 0;
     repair->reinsert(stack, modified, [&](Vertex_handle v, Vertex_handle same) {
       internal::merge_index_info_of(same, v);
@@ -164,7 +163,7 @@ Statistics delaunay_from_index_triples(PointIterator point_at, std::size_t n, co
   std::unique_ptr<internal::Region_repair<DT>> regions;
   if(strategy == Strategy::t_division) {
     std::size_t duplicates = 0;
-    const char* why = internal::repair_by_regions(
+    const Outcome why = internal::repair_by_regions(
         result, regions, std::vector<Face_handle>(), true, stack, !repair, region_size, modified, stats, false,
         [&](Vertex_handle v, Vertex_handle same) {
           internal::merge_index_info_of(same, v);
@@ -174,7 +173,7 @@ Statistics delaunay_from_index_triples(PointIterator point_at, std::size_t n, co
         [&](const void* f) { return (repair && repair->is_created(f)) || filled_by_import(f); });
     // When the t-division does not pay (or cannot be planned), `result` is untouched: a
     // valid triangulation after the carve, which the flips finish as with Strategy::carve.
-    if(why != nullptr)
+    if(why != Outcome::ok)
       regions.reset();
     stats.duplicate_points += duplicates;
   }
@@ -185,7 +184,7 @@ Statistics delaunay_from_index_triples(PointIterator point_at, std::size_t n, co
   // Points reinserted by the t-division make a few flips each, on top of the budget.
   const std::size_t flip_budget = max_flips + (regions ? 4 * regions->detached().size() : 0);
   if(!internal::lawson_flip(result, stack, flip_budget, stats.flips, touched))
-    return build_from_scratch(internal::flip_budget_exhausted);
+    return build_from_scratch(Outcome::flip_budget_exhausted);
 
   // Points no face uses: duplicates of vertices, or points to insert.
   std::vector<std::size_t>& unused = imported.unused_points;

@@ -16,6 +16,7 @@
 #include <CGAL/Delaunay_from_prediction/Statistics.h>
 #include <CGAL/Delaunay_from_prediction/internal/exact_predicates.h>
 #include <CGAL/Delaunay_from_prediction/internal/insertion.h>
+#include <CGAL/Delaunay_from_prediction/internal/outcome.h>
 #include <CGAL/Delaunay_from_prediction/internal/spatial_order.h>
 #include <CGAL/Delaunay_from_prediction/internal/vertex_info.h>
 
@@ -212,7 +213,7 @@ void build_with_exact_predicates(DT& dt, PointIterator points, std::size_t n, St
   build_from_scratch(dt, points, n, stats);
   stats.points_reinserted = n;
   stats.fell_back = true;
-  stats.fallback_reason = inexact_predicates;
+  stats.fallback_reason = fallback_reason(Outcome::inexact_predicates);
 }
 
 // Replaces the faces of `tr` by those of DT(its vertices), keeping every vertex object (so

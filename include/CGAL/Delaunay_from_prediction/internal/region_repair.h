@@ -39,8 +39,10 @@
 #ifndef CGAL_DELAUNAY_FROM_PREDICTION_INTERNAL_REGION_REPAIR_H
 #define CGAL_DELAUNAY_FROM_PREDICTION_INTERNAL_REGION_REPAIR_H
 
+#include <CGAL/Delaunay_from_prediction/internal/dense_index.h>
 #include <CGAL/Delaunay_from_prediction/internal/hash_map.h>
 #include <CGAL/Delaunay_from_prediction/internal/insertion.h>
+#include <CGAL/Delaunay_from_prediction/internal/outcome.h>
 #include <CGAL/Delaunay_from_prediction/internal/predicates.h>
 #include <CGAL/Delaunay_from_prediction/internal/union_find.h>
 
@@ -60,87 +62,6 @@
 namespace CGAL {
 namespace Delaunay_from_prediction {
 namespace internal {
-
-// Dense indices 0..size-1 of the objects of a CGAL Compact_container (a TDS's faces or
-// vertices), in iteration order, from their addresses. The container keeps its objects in a
-// few hundred blocks, so iteration yields runs of consecutive addresses. A table over the
-// address span, one entry per 16 KiB chunk, gives the first run that reaches into each chunk;
-// an index is then one table load, a step or two along the runs, and an offset (about 5 ns,
-// against 20 ns for a binary search among the runs, used when the span is too wide for the
-// table). (Compact_container::index() scans every block.)
-template <class Container>
-class Dense_index
-{
-public:
-  using Object = typename Container::value_type;
-
-  explicit Dense_index(const Container& container)
-  {
-    const Object* last = nullptr;
-    for(auto it = container.begin(); it != container.end(); ++it, ++size_) {
-      const Object* p = &*it;
-      if(last == nullptr || p != last + 1) {
-        if(!runs_.empty())
-          runs_.back().end = address(last + 1);
-        runs_.push_back(Run{address(p), 0, size_});
-      }
-      last = p;
-    }
-    if(runs_.empty())
-      return;
-    runs_.back().end = address(last + 1);
-    std::sort(runs_.begin(), runs_.end(), [](const Run& a, const Run& b) { return a.first < b.first; });
-    low_ = runs_.front().first;
-    const std::uintptr_t span = runs_.back().end - low_;
-    if((span >> chunk_bits) < (std::uintptr_t(1) << 24)) {
-      chunk_first_run_.resize(std::size_t(span >> chunk_bits) + 1);
-      std::size_t r = 0;
-      for(std::size_t c = 0; c < chunk_first_run_.size(); ++c) {
-        const std::uintptr_t chunk_start = low_ + (std::uintptr_t(c) << chunk_bits);
-        while(r + 1 < runs_.size() && runs_[r].end <= chunk_start)
-          ++r;
-        chunk_first_run_[c] = std::uint32_t(r);
-      }
-    }
-  }
-
-  std::size_t size() const { return size_; }
-
-  std::size_t operator()(const Object* object) const
-  {
-    const std::uintptr_t p = address(object);
-    const Run* run;
-    if(!chunk_first_run_.empty()) {
-      run = runs_.data() + chunk_first_run_[(p - low_) >> chunk_bits];
-      while(run->end <= p)
-        ++run;
-    } else {
-      run = runs_.data();
-      std::size_t count = runs_.size();
-      while(count > 1) {
-        const std::size_t half = count / 2;
-        run = run[half].first <= p ? run + half : run;
-        count -= half;
-      }
-    }
-    return run->index + std::size_t((p - run->first) / sizeof(Object));
-  }
-  template <class Handle>
-  std::size_t of(const Handle& h) const { return (*this)(&*h); }
-
-private:
-  static constexpr int chunk_bits = 14;
-  static std::uintptr_t address(const Object* p) { return reinterpret_cast<std::uintptr_t>(p); }
-  struct Run
-  {
-    std::uintptr_t first, end; // addresses of the first object and one past the last
-    std::size_t index;         // dense index of the first object
-  };
-  std::vector<Run> runs_;
-  std::vector<std::uint32_t> chunk_first_run_;
-  std::uintptr_t low_ = 0;
-  std::size_t size_ = 0;
-};
 
 // Default region size t for n vertices: n/32 clamped to [64, 4096] (at least 64 regions). The proof of Theorem 2.1
 // takes t = log2(n)^2 (400 at 1e6 points); measured at 1e6 points with one bad region, a
@@ -219,7 +140,7 @@ public:
   // insertions of a rebuild: measured at 1e6 points, 222,422 points reinserted into the
   // fills with 4.8 flips each, about 3 us per point against 0.85 us for a rebuild). Returns
   // null when commit() can run, otherwise why not (then `tr` is untouched).
-  const char* plan(std::size_t max_cost)
+  Outcome plan(std::size_t max_cost)
   {
     const std::size_t F = faces_.size();
     // 1. B and V_B.
@@ -227,7 +148,7 @@ public:
     for(std::size_t k = 0; k < F; ++k)
       faces_in_bad_regions += region_[k] != outside ? bad_region_[region_[k]] : 0;
     if(faces_in_bad_regions == 0)
-      return nullptr; // nothing marked (a hull that is not convex was): nothing to repair
+      return Outcome::ok; // nothing marked (a hull that is not convex was): nothing to repair
     is_boundary_.assign(F, 0);
     for(std::size_t k = 0; k < F; ++k) {
       if(region_[k] == outside)
@@ -250,7 +171,7 @@ public:
           }
         }
     if(vb_.size() + faces_in_bad_regions > max_cost)
-      return "the bad regions of the t-division are too large for a local repair";
+      return Outcome::bad_regions_too_large;
 
     // 2. DT(V_B), CGAL's insertion (spatially sorted).
     {
@@ -261,9 +182,9 @@ public:
       boundary_dt_.insert(points.begin(), points.end());
     }
     if(boundary_dt_.number_of_vertices() != vb_.size())
-      return "two vertices are at the same point";
+      return Outcome::duplicate_points;
     if(boundary_dt_.dimension() != 2)
-      return "the boundary vertices of the t-division are collinear";
+      return Outcome::boundary_vertices_collinear;
     dt_vertex_.assign(vb_.size(), Dt_vertex());
     for(auto v = boundary_dt_.finite_vertices_begin(); v != boundary_dt_.finite_vertices_end(); ++v)
       dt_vertex_[v->info()] = v;
@@ -304,7 +225,7 @@ public:
       }
     }
     if(kept_faces == 0)
-      return "every region of the t-division is bad";
+      return Outcome::every_region_bad;
     std::size_t removed_boundary_vertices = 0;
     for(std::size_t k = 0; k < F; ++k) {
       if(!removed_[k])
@@ -326,7 +247,7 @@ public:
       }
     }
     if(vb_.size() + 4 * detached_.size() > max_cost)
-      return "the bad regions of the t-division are too large for a local repair";
+      return Outcome::bad_regions_too_large;
 
     // 5. Mark the images of the kept faces of B and of the kept infinite faces.
     dt_index_.reset(new Dt_index(boundary_dt_.tds().faces()));
@@ -340,7 +261,7 @@ public:
     for(const auto& b : border) {
       std::uint32_t& owner = owner_[dt_index.of(b.second)];
       if(owner != none)
-        return "two kept faces have the same vertices";
+        return Outcome::kept_faces_repeated;
       owner = b.first;
     }
 
@@ -356,7 +277,7 @@ public:
         const Dt_face across = b.second->neighbor(b.second->index(dt_of(f->vertex(i))));
         const std::size_t ai = dt_index.of(across);
         if(owner_[ai] != none)
-          return "the kept faces do not fit the triangulation of the boundary vertices";
+          return Outcome::kept_faces_do_not_fit;
         if(in_fill_[ai] != none)
           continue;
         ++holes_;
@@ -378,7 +299,7 @@ public:
     // Every hole edge leads to a contact, distinct ones to distinct contacts: equal counts
     // mean the fill meets the kept faces only at hole edges.
     if(contacts != hole_edges)
-      return "the kept faces do not fit the triangulation of the boundary vertices";
+      return Outcome::kept_faces_do_not_fit;
 
     // 7. Vertices of the fill: one that lost all its faces must have its whole star in DT(V_B)
     // in the fill; one that kept faces must touch a kept face there (be on a hole's boundary);
@@ -400,13 +321,13 @@ public:
           star_in_fill = star_in_fill && in_fill_[gi] != none;
         } while(++g != end);
         if(kept ? !touches_kept : !star_in_fill)
-          return "the kept faces do not fit the triangulation of the boundary vertices";
+          return Outcome::kept_faces_do_not_fit;
         removed_seen += kept ? 0 : 1;
       }
     if(removed_seen != removed_boundary_vertices)
-      return "the kept faces do not fit the triangulation of the boundary vertices";
+      return Outcome::kept_faces_do_not_fit;
     planned_ = true;
-    return nullptr;
+    return Outcome::ok;
   }
 
   std::size_t regions() const { return bad_region_.size(); }

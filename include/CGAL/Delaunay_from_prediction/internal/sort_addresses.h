@@ -16,6 +16,7 @@
 #include <algorithm>
 #include <cstddef>
 #include <cstdint>
+#include <type_traits>
 #include <vector>
 
 namespace CGAL {
@@ -165,6 +166,18 @@ std::size_t count_distinct_addresses(const std::vector<const void*>& listed, con
        keep(p))
       ++distinct;
   return distinct;
+}
+
+// Number of distinct faces in `faces`, not counting those whose address is in `except`.
+template <class Face_handle>
+std::size_t count_distinct(const std::vector<Face_handle>& faces,
+                           std::vector<const void*> except = std::vector<const void*>())
+{
+  using Face = std::remove_cv_t<std::remove_reference_t<decltype(*faces.front())>>;
+  std::sort(except.begin(), except.end());
+  return count_distinct_addresses<Face>(std::vector<const void*>(), faces, 0, [&](const void* a) {
+    return !std::binary_search(except.begin(), except.end(), a);
+  });
 }
 
 } // namespace internal

@@ -34,6 +34,7 @@
 
 #include <CGAL/Delaunay_from_prediction/Statistics.h>
 #include <CGAL/Delaunay_from_prediction/internal/insertion.h>
+#include <CGAL/Delaunay_from_prediction/internal/outcome.h>
 #include <CGAL/Delaunay_from_prediction/internal/predicates.h>
 #include <CGAL/Delaunay_from_prediction/internal/random.h>
 #include <CGAL/Delaunay_from_prediction/internal/rebuild.h>
@@ -232,21 +233,13 @@ bool edges_look_random(PointIterator points, std::size_t n, const std::vector<st
 {
   if(n < 4096 || ends.empty())
     return false;
-  const Box box = bounding_box(n, [&](std::size_t k) -> decltype(points[0]) { return points[k]; });
-  // Lengths and area on coordinates scaled by unit_scale(): neither overflows.
-  const double scale = unit_scale(box);
-  const double area_per_point =
-      (box.xmax * scale - box.xmin * scale) * (box.ymax * scale - box.ymin * scale) / double(n);
-  if(!(area_per_point > 0))
-    return false;
   Splitmix64 random{seed};
-  std::vector<double> squared_lengths;
-  for(int s = 0; s < 255; ++s) {
-    const std::size_t k = 2 * random.below(ends.size() / 2);
-    squared_lengths.push_back(squared_distance_in_double(points[ends[k]], points[ends[k + 1]], scale));
-  }
-  std::nth_element(squared_lengths.begin(), squared_lengths.begin() + 127, squared_lengths.end());
-  return squared_lengths[127] > 32 * 32 * area_per_point;
+  const Spacing_sample sample =
+      sample_spacing(n, [&](std::size_t k) -> decltype(points[0]) { return points[k]; }, [&](std::size_t) {
+        const std::size_t k = 2 * random.below(ends.size() / 2);
+        return std::pair<std::size_t, std::size_t>(ends[k], ends[k + 1]);
+      });
+  return sample.area_per_point > 0 && sample.median_squared_distance > 32 * 32 * sample.area_per_point;
 }
 
 // Inserts the points (random access, n of them) into the empty Delaunay triangulation `dt`
@@ -286,7 +279,7 @@ void insert_along_spanning_forest(DT& dt, PointIterator points, std::size_t n, c
       ranks[r] = r;
     insert_by_index(dt, point.begin(), ranks, on_vertex);
     stats.fell_back = true;
-    stats.fallback_reason = "the graph has too many components to guide the insertion";
+    stats.fallback_reason = fallback_reason(Outcome::graph_too_many_components);
     return;
   }
   std::size_t rounds = 0;
@@ -338,7 +331,7 @@ void insert_along_spanning_forest(DT& dt, PointIterator points, std::size_t n, c
             rest.push_back(s);
         insert_by_index(dt, point.begin(), rest, on_vertex);
         stats.fell_back = true;
-        stats.fallback_reason = "the walks along the spanning tree kept missing";
+        stats.fallback_reason = fallback_reason(Outcome::tree_walks_missing);
         return;
       }
     }
@@ -360,7 +353,7 @@ void build_along_edges(DT& dt, PointIterator points, std::size_t n, const std::v
       indices[i] = i;
     insert_points(dt, points, indices, stats);
     stats.fell_back = true;
-    stats.fallback_reason = "the graph's edges are far longer than the spacing of the points";
+    stats.fallback_reason = fallback_reason(Outcome::graph_edges_too_long);
     return;
   }
   insert_along_spanning_forest(dt, points, n, adjacency_of(ends, n), stats);

@@ -241,6 +241,22 @@ private:
   bool faces_sorted_ = false;
 };
 
+// Whether points listed in this order are spatially coherent: the median distance between
+// 255 sampled consecutive points is at most 4 times the side of the area per point of their
+// bounding box (CGAL's spatial sort, even in BRIO rounds, is; an order of insertion at random
+// is not).
+template <class PointAt>
+bool order_looks_spatial(std::size_t n, PointAt point_at)
+{
+  if(n < 4096)
+    return false; // small: sorting costs nothing
+  const Spacing_sample sample = sample_spacing(n, point_at, [&](std::size_t s) {
+    const std::size_t k = s * (n - 1) / 255;
+    return std::pair<std::size_t, std::size_t>(k, k + 1);
+  });
+  return sample.median_squared_distance <= 16 * sample.area_per_point;
+}
+
 } // namespace internal
 } // namespace Delaunay_from_prediction
 } // namespace CGAL

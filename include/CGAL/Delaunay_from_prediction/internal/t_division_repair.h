@@ -11,6 +11,7 @@
 
 #include <CGAL/Delaunay_from_prediction/Statistics.h>
 #include <CGAL/Delaunay_from_prediction/internal/duplicate_vertices.h>
+#include <CGAL/Delaunay_from_prediction/internal/outcome.h>
 #include <CGAL/Delaunay_from_prediction/internal/predicates.h>
 #include <CGAL/Delaunay_from_prediction/internal/region_repair.h>
 
@@ -24,20 +25,29 @@ namespace Delaunay_from_prediction {
 namespace internal {
 
 // Budget of Strategy::t_division for n vertices, in point insertions (|V_B| plus four times
-// the vertices to reinsert, see Region_repair::plan()): about a rebuild. Tests raise it to
-// reach the repair on small, badly damaged inputs.
-#ifndef CGAL_DELAUNAY_FROM_PREDICTION_T_DIVISION_BUDGET
-#define CGAL_DELAUNAY_FROM_PREDICTION_T_DIVISION_BUDGET(n) (n)
-#endif
+// the vertices to reinsert, see Region_repair::plan()): about a rebuild, n times this
+// factor. A knob for tests only (one object in the whole program, set at run time), which
+// raise it to reach the repair on small, badly damaged inputs.
+inline double& t_division_budget_factor()
+{
+  static double factor = 1;
+  return factor;
+}
+inline std::size_t t_division_budget(std::size_t n)
+{
+  const double budget = t_division_budget_factor() * double(n);
+  const double most = double(std::size_t(-1) / 4);
+  return budget < most ? std::size_t(budget) : std::size_t(-1) / 4;
+}
 
 // Strategy::t_division on the valid triangulation `tr` (region_repair.h): the faces in `bad`
 // are not counterclockwise; the failing edges are those of `stack` (when `stack_fails`), or
 // those of its edges that fail the in-circle test. Replaces the bad regions and reinserts
-// their inner vertices, leaving the flips to the caller; returns null then, otherwise why not
+// their inner vertices, leaving the flips to the caller; returns Outcome::ok then, otherwise why not
 // with `tr` untouched. With `check_duplicates`, returns first if a vertex to reinsert is at
 // the point of another; otherwise `on_duplicate(v, w)` handles it as in reinsert_vertex_objects().
 template <class Triangulation, class OnDuplicate, class MadeEarlier = bool (*)(const void*)>
-const char* repair_by_regions(Triangulation& tr, std::unique_ptr<Region_repair<Triangulation>>& regions,
+Outcome repair_by_regions(Triangulation& tr, std::unique_ptr<Region_repair<Triangulation>>& regions,
                               const std::vector<typename Triangulation::Face_handle>& bad, bool hull_is_convex,
                               std::vector<std::pair<typename Triangulation::Face_handle, int>>& stack,
                               bool stack_fails, std::size_t region_size, std::vector<const void*>& modified,
@@ -65,9 +75,9 @@ const char* repair_by_regions(Triangulation& tr, std::unique_ptr<Region_repair<T
   // more), against 0.75-0.86 us per point for a rebuild. Past m t = 0.15 n the division alone
   // would take the call past 1.1 times a rebuild (with the import of index triples, about 0.35
   // us per point, before it): say so before dividing, and let the carve finish.
-  const std::size_t budget = CGAL_DELAUNAY_FROM_PREDICTION_T_DIVISION_BUDGET(n);
+  const std::size_t budget = t_division_budget(n);
   if(double(bad.size() + failing.size()) * double(region_size) > 0.15 * double(budget))
-    return "the damage would make the t-division cost more than a rebuild";
+    return Outcome::t_division_over_budget;
   regions.reset(new Region_repair<Triangulation>(tr, region_size));
   for(const auto f : bad)
     regions->mark_bad_face(f);
@@ -75,14 +85,14 @@ const char* repair_by_regions(Triangulation& tr, std::unique_ptr<Region_repair<T
     regions->mark_failing_edge(e.first, e.second);
   if(!hull_is_convex)
     regions->mark_hull_if_not_convex();
-  const char* why = regions->plan(budget);
+  const Outcome why = regions->plan(budget);
   stats.regions = regions->regions();
   stats.bad_regions = regions->bad_regions();
   stats.boundary_vertices = regions->boundary_vertices();
-  if(why != nullptr)
+  if(why != Outcome::ok)
     return why;
   if(check_duplicates && has_duplicate_of(tr, regions->detached()))
-    return "two vertices are at the same point";
+    return Outcome::duplicate_points;
   // Faces an earlier stage made (the carve's fill, the import's) are not predicted faces:
   // not counted as carved.
   stats.faces_carved += regions->faces_removed_if([&](const void* f) { return !made_earlier(f); });
@@ -90,7 +100,7 @@ const char* repair_by_regions(Triangulation& tr, std::unique_ptr<Region_repair<T
   regions->reinsert(stack, modified, on_duplicate);
   stats.holes_refilled += regions->holes();
   stats.points_reinserted += regions->detached().size();
-  return nullptr;
+  return Outcome::ok;
 }
 
 } // namespace internal

@@ -10,6 +10,7 @@
 #define CGAL_DELAUNAY_FROM_PREDICTION_INTERNAL_TDS_CERTIFY_H
 
 #include <CGAL/Delaunay_from_prediction/internal/flips.h>
+#include <CGAL/Delaunay_from_prediction/internal/outcome.h>
 #include <CGAL/Delaunay_from_prediction/internal/predicates.h>
 
 #include <cstddef>
@@ -43,19 +44,19 @@ struct Inline_flips
   std::size_t edges_failing = 0; // edges the pass found failing, flipped or listed
 };
 
-// Returns null if every finite face of `tr` (dimension 2) is counterclockwise, after listing
+// Returns Outcome::ok if every finite face of `tr` (dimension 2) is counterclockwise, after listing
 // in `non_delaunay` every interior edge that fails the perturbed in-circle test; otherwise
 // returns why not. If `bad_faces` is given, the faces that are not counterclockwise go there
-// instead, and the pass goes on (null is returned; `hull_is_convex` is then only meaningful
+// instead, and the pass goes on (Outcome::ok is returned; `hull_is_convex` is then only meaningful
 // if `bad_faces` stays empty), unless more than `max_bad_faces` are found: then the pass
 // stops at once and returns why. `hull_is_convex` tells whether the hull is a convex polygon wound once:
 // then the argument of import_prediction.h (the TDS providing the twin pairing) shows that
 // `tr` is a geometric triangulation of its vertices; if not, convexify_hull() may make it one.
 // Reads only, unless `inline_flips` is given: then the failing edges between counterclockwise
 // faces are flipped as they are found (see Inline_flips), and the call returns
-// flip_budget_exhausted when the budget runs out.
+// Outcome::flip_budget_exhausted when the budget runs out.
 template <class Triangulation>
-const char* certify_triangulation(
+Outcome certify_triangulation(
     Triangulation& tr,
     std::vector<std::pair<typename Triangulation::Face_handle, int>>& non_delaunay,
     std::size_t& edges_tested, bool& hull_is_convex,
@@ -67,7 +68,7 @@ const char* certify_triangulation(
   using Gt = typename Triangulation::Geom_traits;
   hull_is_convex = false;
   if(tr.dimension() < 2)
-    return "the triangulation has dimension below 2";
+    return Outcome::dimension_below_2;
   const Gt& gt = tr.geom_traits();
   auto orientation = gt.orientation_2_object();
   const auto infinite = tr.infinite_vertex();
@@ -115,13 +116,13 @@ const char* certify_triangulation(
     const Point* p2 = &f->vertex(2)->point();
     if(orientation(*p0, *p1, *p2) != LEFT_TURN) {
       if(bad_faces == nullptr)
-        return "a face is inverted or flat";
+        return Outcome::inverted_face;
       bad_faces->push_back(f);
       // Past the limit, or heading for 1.5 times the limit after a fair sample: at 1e6 points
       // each moved by half the mean nearest-neighbour distance (6% of the faces turned over)
       // the pass reached the limit half way, 0.05 s for nothing.
       if(bad_faces->size() > max_bad_faces || bad_faces_heading_past(1.5, 65536))
-        return "too many faces are inverted or flat for a local repair";
+        return Outcome::too_many_inverted_faces;
       continue;
     }
     bool flipped = false;
@@ -147,7 +148,7 @@ const char* certify_triangulation(
       const std::size_t flips_before = inline_flips->flips;
       if(!flip_edges_while<has_exact_double_predicates<Gt>::value>(
              tr, cascade, wants_flip, inline_flips->max_flips, inline_flips->flips, &inline_flips->touched, log_flip))
-        return flip_budget_exhausted;
+        return Outcome::flip_budget_exhausted;
       if(inline_flips->flips == flips_before)
         continue; // not flipped: listed
       // f was flipped: its edges are tested again (they are locally Delaunay unless a later
@@ -160,7 +161,7 @@ const char* certify_triangulation(
     }
   }
   hull_is_convex = hull_is_convex_and_wound_once(tr);
-  return nullptr;
+  return Outcome::ok;
 }
 
 } // namespace internal

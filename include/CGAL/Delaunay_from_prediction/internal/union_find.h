@@ -2,8 +2,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Author(s): Delaunay_from_prediction founding team
 //
-// Disjoint sets over 0..n-1 (Kruskal's algorithm of the EMST; the tests and benchmarks build
-// spanning trees with it too).
+// Disjoint sets over 0..n-1: Kruskal's algorithm of the EMST, the merge of small regions of
+// the t-division; the tests and benchmarks build spanning trees with it too.
 
 #ifndef CGAL_DELAUNAY_FROM_PREDICTION_INTERNAL_UNION_FIND_H
 #define CGAL_DELAUNAY_FROM_PREDICTION_INTERNAL_UNION_FIND_H
