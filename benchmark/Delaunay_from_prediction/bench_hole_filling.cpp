@@ -23,7 +23,7 @@
 
 #include "benchmark_util.h"
 
-#include <CGAL/Delaunay_from_prediction/internal/ear_clipping.h>
+#include <CGAL/Delaunay_from_prediction/internal/hole_tracing.h>
 #include <CGAL/Delaunay_from_prediction/internal/predicates.h>
 
 #include <cstdio>

@@ -12,7 +12,7 @@
 
 #include <CGAL/Delaunay_from_prediction/Statistics.h>
 #include <CGAL/Delaunay_from_prediction/parameters.h>
-#include <CGAL/Delaunay_from_prediction/internal/carve_in_place.h>
+#include <CGAL/Delaunay_from_prediction/internal/carve_repair.h>
 #include <CGAL/Delaunay_from_prediction/internal/flips.h>
 #include <CGAL/Delaunay_from_prediction/internal/hierarchy.h>
 #include <CGAL/Delaunay_from_prediction/internal/input_check.h>
@@ -20,7 +20,7 @@
 #include <CGAL/Delaunay_from_prediction/internal/prediction_pipeline.h>
 #include <CGAL/Delaunay_from_prediction/internal/rebuild.h>
 #include <CGAL/Delaunay_from_prediction/internal/sort_addresses.h>
-#include <CGAL/Delaunay_from_prediction/internal/t_division_repair.h>
+#include <CGAL/Delaunay_from_prediction/internal/region_repair.h>
 #include <CGAL/Delaunay_from_prediction/internal/tds_certify.h>
 
 #include <CGAL/Named_function_parameters.h>
@@ -80,7 +80,7 @@ for that to pay off is rebuilt from scratch (`Statistics::fell_back`).
     \cgalParamDescription{whether to draw 32 faces and 16 points at random first, and to build
       from scratch at once if more than half of the faces have a drawn point inside their
       circumcircle (a prediction that far from Delaunay would cost more to repair than to
-      rebuild). Only used for at least 4096 points and faces with random access.}
+      rebuild). Only used for at least 4096 points and 4096 faces.}
     \cgalParamType{`bool`}
     \cgalParamDefault{`true`}
   \cgalParamNEnd

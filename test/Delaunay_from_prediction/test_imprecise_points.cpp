@@ -127,7 +127,7 @@ struct Imprecise_test
     DFP_CHECK(s.points_reinserted == points.size());
     DFP_CHECK_MSG(s.duplicate_points == points.size() - smallest_indices(points).size(), s.duplicate_points);
     DFP_CHECK(s.points_located < (std::max)(std::size_t(1), points.size()));
-    // Inexact predicates: built by CGAL's insertion instead, a fallback (exact_predicates.h).
+    // Inexact predicates: built by CGAL's insertion instead, a fallback (predicates.h).
     DFP_CHECK(s.fell_back == DFP::internal::decides_by_exact_predicates<K>::value);
     return s;
   }

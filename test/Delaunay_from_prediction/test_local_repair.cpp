@@ -908,7 +908,9 @@ void import_fills_small_holes()
     DFP_CHECK(deleted > 100);
     DT imported;
     DFP::internal::Imported_prediction<DT> out;
-    DFP::internal::Prediction_importer<DT>::run(imported, points.begin(), points.size(), kept, kept.size(), out, true);
+    std::vector<std::uint32_t> triples;
+    DFP_CHECK(DFP::internal::read_index_triples(kept, points.size(), kept.size(), triples));
+    DFP::internal::Prediction_importer<DT>::run(imported, points.begin(), points.size(), triples, out, true);
     DFP_CHECK_MSG(out.failure == DFP::internal::Outcome::ok && !out.needs_repair && out.holes_filled == deleted &&
                       out.filled_faces.size() == deleted && out.not_locally_delaunay.empty(),
                   DFP::internal::fallback_reason(out.failure) << " needs_repair " << out.needs_repair << ", " << out.holes_filled

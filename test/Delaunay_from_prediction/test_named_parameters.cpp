@@ -240,6 +240,9 @@ void test_screen(CGAL::Random& rng)
       const DFP::Statistics st =
           run(points, faces, triples, NP::strategy(DFP::Strategy::flips, NP::screen_prediction(screen)));
       DFP_CHECK(st.fell_back);
+      // The screen draws from the faces once they are read, whatever the range.
+      if(screen)
+        DFP_CHECK_MSG(reason_is(st, DFP::internal::Outcome::screen_rejected), st.fallback_reason);
       const DFP::Statistics automatic = run(points, faces, triples, NP::screen_prediction(screen));
       DFP_CHECK(repaired_or_rebuilt(automatic));
     }

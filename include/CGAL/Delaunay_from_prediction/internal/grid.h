@@ -91,29 +91,33 @@ double squared_distance_in_double(const Point& a, const Point& b, double scale)
   return dx * dx + dy * dy;
 }
 
+// The cell of a coordinate f counted in cells from the grid's low end, for a grid of `cells`
+// cells (at least 1): floor(f) clamped to [0, cells - 1]; the guard `f > 0` maps -inf and NaN
+// to cell 0 and the clamp maps inf to the last before the cast (casting either is undefined).
+inline std::size_t clamped_cell(double f, std::size_t cells)
+{
+  return std::size_t(f > 0 ? (std::min)(f, double(cells - 1)) : 0);
+}
+
 // The cells of one axis of a grid: `cells` equal cells over [lo, hi], coordinates beyond
 // falling in the end cells. Robust for any lo <= hi: the coordinates are scaled by
 // unit_scale() of the interval first, so the number of cells per unit is finite for a
 // subnormal width and a width that overflows, and (x - lo) * cells per unit is never NaN,
-// while a width of 0 gives 0 cells per unit (one cell); the guard `f > 0` maps -inf to cell 0
-// and the clamp maps inf to the last before the cast.
+// while a width of 0 gives 0 cells per unit (one cell); clamped_cell() does the rest.
 struct Grid_axis
 {
-  double scale = 1, lo = 0, per_unit = 0, last = 0;
+  double scale = 1, lo = 0, per_unit = 0;
+  std::size_t cells = 1;
 
   Grid_axis() = default;
-  Grid_axis(double lo_, double hi_, std::size_t cells)
-      : scale(unit_scale(lo_, hi_, 0, 0)), lo(lo_ * scale), last(double(cells - 1))
+  Grid_axis(double lo_, double hi_, std::size_t cells_)
+      : scale(unit_scale(lo_, hi_, 0, 0)), lo(lo_ * scale), cells(cells_)
   {
     const double width = hi_ * scale - lo;
     per_unit = width > 0 ? double(cells) / width : 0;
   }
 
-  std::size_t operator()(double x) const
-  {
-    const double f = (x * scale - lo) * per_unit;
-    return std::size_t(f > 0 ? (std::min)(f, last) : 0);
-  }
+  std::size_t operator()(double x) const { return clamped_cell((x * scale - lo) * per_unit, cells); }
 };
 
 // Whether pairs of points (consecutive points of an order, the ends of edges) are about as

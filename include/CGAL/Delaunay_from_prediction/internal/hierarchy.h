@@ -12,7 +12,7 @@
 #ifndef CGAL_DELAUNAY_FROM_PREDICTION_INTERNAL_HIERARCHY_H
 #define CGAL_DELAUNAY_FROM_PREDICTION_INTERNAL_HIERARCHY_H
 
-#include <CGAL/Delaunay_from_prediction/internal/exact_predicates.h>
+#include <CGAL/Delaunay_from_prediction/internal/predicates.h>
 
 #include <CGAL/Triangulation_hierarchy_2.h>
 

@@ -19,6 +19,7 @@
 #include <tuple>
 #include <type_traits>
 #include <utility>
+#include <vector>
 
 namespace CGAL {
 namespace Delaunay_from_prediction {
@@ -73,6 +74,26 @@ void read_face(const Face& face, std::size_t k, std::size_t n, std::size_t out[3
           << out[0] << ", " << out[1] << ", " << out[2] << ")";
       throw Invalid_prediction(msg.str());
     }
+}
+
+// Reads and validates every face (read_face()) into `triples`, three 32-bit indices a face.
+// Returns false, with `triples` empty after the faces are validated, when the indices do not
+// fit in 32 bits (a CGAL triangulation of that many points needs hundreds of GB anyway).
+template <class FaceRange>
+bool read_index_triples(const FaceRange& faces, std::size_t n, std::size_t number_of_faces,
+                        std::vector<std::uint32_t>& triples)
+{
+  const bool fits = n < std::size_t(std::uint32_t(-1)) && number_of_faces < (std::size_t(1) << 31);
+  triples.assign(fits ? 3 * number_of_faces : 0, 0);
+  std::uint32_t* out = triples.data();
+  std::size_t k = 0, idx[3];
+  for(const auto& face : faces) {
+    read_face(face, k++, n, idx);
+    if(fits)
+      for(int j = 0; j < 3; ++j)
+        *out++ = std::uint32_t(idx[j]);
+  }
+  return fits;
 }
 
 template <class Edge, class = void>

@@ -9,6 +9,7 @@
 #ifndef CGAL_DELAUNAY_FROM_PREDICTION_INTERNAL_NEAREST_NEIGHBOUR_GRAPH_H
 #define CGAL_DELAUNAY_FROM_PREDICTION_INTERNAL_NEAREST_NEIGHBOUR_GRAPH_H
 
+#include <CGAL/Delaunay_from_prediction/internal/grid.h>
 #include <CGAL/Delaunay_from_prediction/internal/spanning_tree_insertion.h>
 #include <CGAL/Delaunay_from_prediction/internal/spatial_order.h>
 
@@ -88,8 +89,8 @@ void read_grid_near(const Nng_cells& g, std::uint32_t base, double x, double y, 
     std::size_t cell = row * g.side_x, end = cell + g.side_x;
     if(g.sx > 0) {
       const double a0 = (x - w - g.xmin) * g.sx, a1 = (x + w - g.xmin) * g.sx;
-      end = cell + std::size_t(a1 > 0 ? (std::min)(a1, double(g.side_x - 1)) : 0) + 1;
-      cell += std::size_t(a0 > 0 ? (std::min)(a0, double(g.side_x - 1)) : 0);
+      end = cell + clamped_cell(a1, g.side_x) + 1;
+      cell += clamped_cell(a0, g.side_x);
     }
     while(cell < end && read < budget) {
       std::size_t run_end = end; // a run of cells not refined: one range of positions
@@ -111,7 +112,7 @@ void read_grid_near(const Nng_cells& g, std::uint32_t base, double x, double y, 
   };
   // From the row nearest the point up, then down, each way until a row beyond the circle.
   const double fy = (y - g.ymin) * g.sy;
-  const std::size_t near_row = std::size_t(fy > 0 ? (std::min)(fy, double(g.side_y - 1)) : 0);
+  const std::size_t near_row = clamped_cell(fy, g.side_y);
   for(std::size_t row = near_row; row < g.side_y && read < budget; ++row)
     if(!read_row(row))
       break;
@@ -165,8 +166,8 @@ inline void nearest_neighbour_graph_in_frame(const double* xy, std::size_t m, st
   std::vector<std::uint32_t> key(m), start(cells + 1, 0);
   auto cell_of = [&](double x, double y, long& cx, long& cy) {
     const double fx = (x - xmin) * sx, fy = (y - ymin) * sy;
-    cx = long(fx > 0 ? (std::min)(fx, double(side_x - 1)) : 0);
-    cy = long(fy > 0 ? (std::min)(fy, double(side_y - 1)) : 0);
+    cx = long(clamped_cell(fx, side_x));
+    cy = long(clamped_cell(fy, side_y));
   };
   for(std::size_t k = 0; k < m; ++k) {
     long cx, cy;

@@ -14,12 +14,13 @@
 #include <CGAL/Delaunay_from_prediction/internal/carve_repair.h>
 #include <CGAL/Delaunay_from_prediction/internal/flips.h>
 #include <CGAL/Delaunay_from_prediction/internal/import_prediction.h>
+#include <CGAL/Delaunay_from_prediction/internal/input_check.h>
 #include <CGAL/Delaunay_from_prediction/internal/outcome.h>
+#include <CGAL/Delaunay_from_prediction/internal/prediction_screens.h>
 #include <CGAL/Delaunay_from_prediction/internal/rebuild.h>
 #include <CGAL/Delaunay_from_prediction/internal/region_repair.h>
 #include <CGAL/Delaunay_from_prediction/internal/sort_addresses.h>
 #include <CGAL/Delaunay_from_prediction/internal/spanning_tree_insertion.h>
-#include <CGAL/Delaunay_from_prediction/internal/t_division_repair.h>
 #include <CGAL/Delaunay_from_prediction/internal/vertex_info.h>
 
 #include <algorithm>
@@ -49,20 +50,25 @@ Statistics delaunay_from_index_triples(PointIterator point_at, std::size_t n, co
   const auto& gt = dt.geom_traits();
   DT result(gt);
   internal::Imported_prediction<DT> imported;
-  auto read_all_faces = [&] {
-    std::size_t k = 0, idx[3];
-    for(const auto& face : faces)
-      internal::read_face(face, k++, n, idx);
-  };
-  if(strategy == Strategy::rebuild || strategy == Strategy::spanning_tree) {
-    read_all_faces();
+  // Stage 1: every face validated once, into 32-bit triples (a malformed face throws here).
+  std::vector<std::uint32_t> triples;
+  const bool fits = internal::read_index_triples(faces, n, number_of_faces, triples);
+  // Stage 2: the screens, then the import. Faces missing, told by counting (see
+  // missing_faces_exceed()): past n/8 the local repair would not pay; without it, past n/64
+  // the faces cannot be a triangulation (any excess shows that, the margin keeps the count off
+  // the common case of about 2n faces).
+  if(strategy == Strategy::rebuild || strategy == Strategy::spanning_tree)
     imported.failure = strategy == Strategy::rebuild ? Outcome::rebuild_requested : Outcome::spanning_tree_requested;
-  } else if(screen && internal::fails_sampling_screen(gt, point_at, n, faces, number_of_faces)) {
-    read_all_faces();
+  else if(!fits)
+    imported.failure = Outcome::too_many_indices;
+  else if(number_of_faces == 0)
+    imported.failure = Outcome::no_faces;
+  else if(screen && internal::fails_sampling_screen(gt, point_at, n, triples))
     imported.failure = Outcome::screen_rejected;
-  } else {
-    internal::Prediction_importer<DT>::run(result, point_at, n, faces, number_of_faces, imported, carve);
-  }
+  else if(internal::missing_faces_exceed(gt, point_at, n, triples, carve ? n / 8 + 16 : n / 64 + 16))
+    imported.failure = carve ? Outcome::too_many_holes : Outcome::holes_or_not_a_triangulation;
+  else
+    internal::Prediction_importer<DT>::run(result, point_at, n, triples, imported, carve);
 
   // The global fallback, a build from scratch: in spatial order, or, with
   // Strategy::spanning_tree, along a spanning tree of the faces' edges (Corollaries 3.4 and
@@ -80,18 +86,17 @@ Statistics delaunay_from_index_triples(PointIterator point_at, std::size_t n, co
     const std::vector<std::uint32_t> grid_order = std::move(imported.points_in_grid_order);
     imported = internal::Imported_prediction<DT>();
     DT fresh(gt);
-    if(strategy != Strategy::spanning_tree || n >= std::size_t(internal::no_rank)) {
+    if(strategy != Strategy::spanning_tree || !fits || n >= std::size_t(internal::no_rank)) {
+      std::vector<std::uint32_t>().swap(triples); // not needed: keep the peak memory down
       internal::build_from_scratch(fresh, point_at, n, stats, grid_order);
     } else {
-      // Two edges of each face keep its three corners connected.
+      // Two edges of each face keep its three corners connected (`triples` is still as read:
+      // the import, which reorders it, did not run).
       std::vector<std::uint32_t> ends;
       ends.reserve(4 * number_of_faces);
-      std::size_t k = 0, idx[3];
-      for(const auto& face : faces) {
-        internal::read_face(face, k++, n, idx);
-        ends.insert(ends.end(), {std::uint32_t(idx[0]), std::uint32_t(idx[1]), std::uint32_t(idx[1]),
-                                 std::uint32_t(idx[2])});
-      }
+      for(std::size_t t = 0; t < triples.size(); t += 3)
+        ends.insert(ends.end(), {triples[t], triples[t + 1], triples[t + 1], triples[t + 2]});
+      std::vector<std::uint32_t>().swap(triples);
       internal::build_along_edges(fresh, point_at, n, ends, stats);
     }
     stats.fallback_reason = internal::fallback_reason(why);
@@ -189,6 +194,11 @@ Statistics delaunay_from_index_triples(PointIterator point_at, std::size_t n, co
   // Points no face uses: duplicates of vertices, or points to insert.
   std::vector<std::size_t>& unused = imported.unused_points;
   stats.points_unused = unused.size();
+  // Statistics::faces_certified: predicted faces never modified. Faces are told apart by
+  // address, and a repair recycles the objects of the faces it destroys, so the faces the
+  // stages made or changed are recorded as they go (filled_faces, is_created(), `modified`,
+  // `touched`): a count at the end by vertex triples would need all 2n predicted triples
+  // in a table (make_delaunay() would have to copy them first), a cost on every call.
   if(unused.empty() && !repair && !regions && imported.filled_faces.empty()) {
     stats.faces_certified = result.number_of_faces() - internal::count_distinct(touched);
   } else if(unused.empty() && !regions) {

@@ -14,7 +14,7 @@
 #define CGAL_DELAUNAY_FROM_PREDICTION_INTERNAL_REBUILD_H
 
 #include <CGAL/Delaunay_from_prediction/Statistics.h>
-#include <CGAL/Delaunay_from_prediction/internal/exact_predicates.h>
+#include <CGAL/Delaunay_from_prediction/internal/predicates.h>
 #include <CGAL/Delaunay_from_prediction/internal/insertion.h>
 #include <CGAL/Delaunay_from_prediction/internal/outcome.h>
 #include <CGAL/Delaunay_from_prediction/internal/spatial_order.h>
