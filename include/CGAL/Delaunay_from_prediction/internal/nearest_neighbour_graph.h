@@ -127,6 +127,9 @@ inline void nearest_neighbour_graph_in_frame(const double* xy, std::size_t m, st
                                              std::vector<std::uint32_t>& nn, int depth, Nng_cells* grid_out)
 {
   constexpr std::size_t crowded = 32, budget = 512;
+  // At most 4096 x 4096 cells (2^22 in a line): about two points a cell up to 2^25 points, and
+  // the array of cell starts stays within 64 MB; denser cells are refined as crowded ones.
+  constexpr double max_side = 4096, max_in_line = 1 << 22;
   order.resize(m);
   nn.assign(m, no_rank);
   if(m == 0)
@@ -139,8 +142,9 @@ inline void nearest_neighbour_graph_in_frame(const double* xy, std::size_t m, st
     ymax = (std::max)(ymax, xy[2 * k + 1]);
   }
   // In the frame nearest_neighbour_graph() gives, the box's larger side is 0 or between 2^-74
-  // and 2^65; refined cells are smaller. A side below 2^-960 (a refined cell of points a few subnormals apart near the origin) counts as
-  // 0: cells per unit would overflow, and the squares of such differences underflow anyway.
+  // and 2^65; refined cells are smaller. A side below 2^-960 (a refined cell of points a few
+  // subnormals apart near the origin) counts as 0: cells per unit would overflow, and the
+  // squares of such differences underflow anyway.
   const double width = xmax - xmin > 0x1p-960 ? xmax - xmin : 0, height = ymax - ymin > 0x1p-960 ? ymax - ymin : 0;
   // Square cells of area 2 / density, sqrt(target * width / height) of them across (the
   // product width * height would underflow in small cells); a degenerate box gets a row or a
@@ -149,12 +153,12 @@ inline void nearest_neighbour_graph_in_frame(const double* xy, std::size_t m, st
   std::size_t side_x = 1, side_y = 1;
   if(width > 0 && height > 0) {
     const double aspect = width / height; // an inf or 0 is clamped
-    side_x = std::size_t((std::min)(4096.0, (std::max)(1.0, std::floor(std::sqrt(target * aspect)))));
-    side_y = std::size_t((std::min)(4096.0, (std::max)(1.0, std::floor(std::sqrt(target / aspect)))));
+    side_x = std::size_t((std::min)(max_side, (std::max)(1.0, std::floor(std::sqrt(target * aspect)))));
+    side_y = std::size_t((std::min)(max_side, (std::max)(1.0, std::floor(std::sqrt(target / aspect)))));
   } else if(width > 0) {
-    side_x = std::size_t((std::min)(double(1 << 22), target));
+    side_x = std::size_t((std::min)(max_in_line, target));
   } else if(height > 0) {
-    side_y = std::size_t((std::min)(double(1 << 22), target));
+    side_y = std::size_t((std::min)(max_in_line, target));
   }
   const double sx = width > 0 ? double(side_x) / width : 0, sy = height > 0 ? double(side_y) / height : 0;
   const double cell_width = width > 0 ? width / double(side_x) : 0, cell_height = height > 0 ? height / double(side_y) : 0;
@@ -194,7 +198,7 @@ inline void nearest_neighbour_graph_in_frame(const double* xy, std::size_t m, st
     std::vector<double> sub_p;
     for(std::size_t c = 0; c < cells; ++c) {
       const std::size_t first = start[c], count = start[c + 1] - start[c];
-      if(count <= crowded || count == m || depth >= 6)
+      if(count <= crowded || count == m || depth >= max_grid_depth)
         continue;
       if(sub_of.empty())
         sub_of.assign(cells, no_rank);
