@@ -3,7 +3,7 @@
 # sudo when not root). Sourced by demo.sh and test.sh.
 set -euo pipefail
 
-packages=(cmake g++ libcgal-dev libboost-dev libgmp-dev libmpfr-dev)
+packages=(cmake g++ libcgal-dev libboost-dev libgmp-dev libmpfr-dev libtbb-dev)
 missing=()
 for p in "${packages[@]}"; do
   status=$(dpkg-query -W -f='${Status}' "$p" 2>/dev/null || true)

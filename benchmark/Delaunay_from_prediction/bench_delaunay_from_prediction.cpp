@@ -41,11 +41,19 @@
 // Usage: bench_delaunay_from_prediction [--n 100000,1000000] [--reps 3]
 //          [--cases shuffled,hilbert,flips,move,random,memory,kinetic,deleted]
 //          [--dist uniform,clustered] [--noise gaussian,disk] [--csv FILE]
-//          [--malloc keep|default] [--seed S]
+//          [--malloc keep|default] [--seed S] [--threads T]
+//
+// With --threads T (a build with TBB), every case but memory and deleted also times our call
+// with CGAL::Parallel_tag in a TBB arena of T threads, in the same repetitions, and prints its
+// speed-up over the sequential call.
 
 #include "benchmark_util.h"
 
 #include <CGAL/hilbert_sort.h>
+
+#ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/task_arena.h>
+#endif
 
 #include <malloc.h>
 #include <sched.h>
@@ -343,6 +351,7 @@ struct Options
   std::uint64_t seed = 20260101;
   std::vector<std::string> strategies{"carve", "t_division", "flips"};
   std::size_t region_size = 0; // 0: the default of Strategy::t_division
+  int threads = 0;             // > 0: every call of ours also with CGAL::Parallel_tag on that many threads
   bool runs(const std::string& s) const
   {
     return std::find(strategies.begin(), strategies.end(), s) != strategies.end();
@@ -365,7 +374,10 @@ void usage(const char* program)
       "                  kept by the process and reused; default: glibc's own policy\n"
       "  --seed S        base seed of every input (default 20260101)\n"
       "  --strategies L  strategies of kinetic and deleted, subset of carve,t_division,flips (default all)\n"
-      "  --region-size T region size t of strategy t_division (default: max(64, log2(n)^2))\n",
+      "  --region-size T region size t of strategy t_division (default: max(64, log2(n)^2))\n"
+      "  --threads T     also time every call of ours with CGAL::Parallel_tag in a TBB arena of T\n"
+      "                  threads, in the same repetitions, and print its speed-up over the\n"
+      "                  sequential call (default 0: sequential only; needs TBB)\n",
       program);
 }
 
@@ -424,6 +436,14 @@ Options parse(int argc, char** argv)
           std::fprintf(stderr, "unknown strategy %s\n", st.c_str());
           std::exit(2);
         }
+    } else if(a == "--threads") {
+      o.threads = std::max(0, std::atoi(value(i).c_str()));
+#ifndef CGAL_LINKED_WITH_TBB
+      if(o.threads > 0) {
+        std::fprintf(stderr, "--threads needs a build with TBB (CGAL_LINKED_WITH_TBB)\n");
+        std::exit(2);
+      }
+#endif
     } else if(a == "--region-size") {
       o.region_size = std::size_t(std::max(1LL, std::atoll(value(i).c_str())));
     } else if(a == "--seed") {
@@ -676,13 +696,76 @@ void measure(int reps, Row& row, Cgal cgal, Ours ours)
   measure_all(reps, {&row}, cgal, {Our_call(ours)});
 }
 
+// --threads: the number of threads of the parallel calls (0: none).
+int parallel_threads = 0;
+
+// Runs call() in a TBB arena of parallel_threads threads.
+template <class Call>
+double in_arena(const Call& call)
+{
+#ifdef CGAL_LINKED_WITH_TBB
+  tbb::task_arena arena(parallel_threads);
+  return arena.execute(call);
+#else
+  return call();
+#endif
+}
+
+// The row of the parallel twin of `row`.
+Row parallel_row(Row row)
+{
+  row.param += " | par " + std::to_string(parallel_threads);
+  return row;
+}
+
+// Reports `rows`, and, for each pair (sequential, parallel) in `pairs`, the speed-up of the
+// parallel call over the sequential one (ratio of their medians in the same repetitions).
+void report_with_speedups(Report& report, const std::vector<Row>& rows,
+                          const std::vector<std::pair<std::size_t, std::size_t>>& pairs)
+{
+  for(const Row& row : rows)
+    report.add(row);
+  for(const auto& p : pairs)
+    std::printf("%19s%s: Parallel_tag on %d threads %.2f times as fast as sequential\n", "",
+                rows[p.first].param.c_str(), parallel_threads,
+                median(rows[p.first].our_times) / median(rows[p.second].our_times));
+  std::fflush(stdout);
+}
+
+// Measures `ours` (a call taking the concurrency tag: ours(tag, stats, signature)) against
+// CGAL's build `cgal` and reports it; with --threads, also the call with CGAL::Parallel_tag in
+// an arena of that many threads, in the same repetitions.
+template <class Cgal, class Ours>
+void measure_and_report(int reps, Report& report, const Row& row, Cgal cgal, Ours ours)
+{
+  std::vector<Row> rows{row};
+  std::vector<Our_call> calls{[&](DFP::Statistics& st, Signature& s) { return ours(CGAL::Sequential_tag(), st, s); }};
+#ifdef CGAL_LINKED_WITH_TBB
+  if(parallel_threads > 0) {
+    rows.push_back(parallel_row(row));
+    calls.push_back([&](DFP::Statistics& st, Signature& s) {
+      return in_arena([&] { return ours(CGAL::Parallel_tag(), st, s); });
+    });
+  }
+#endif
+  std::vector<Row*> pointers;
+  for(Row& r : rows)
+    pointers.push_back(&r);
+  measure_all(reps, pointers, cgal, calls);
+  report_with_speedups(report, rows, rows.size() > 1 ? std::vector<std::pair<std::size_t, std::size_t>>{{0, 1}}
+                                                     : std::vector<std::pair<std::size_t, std::size_t>>{});
+}
+
 // A delaunay_from_prediction() case: CGAL builds `points` from scratch, we build them from
 // `faces`.
-void measure_prediction(int reps, Row& row, const std::vector<Point>& points,
+void measure_prediction(int reps, Report& report, const Row& row, const std::vector<Point>& points,
                         const std::vector<Face>& faces)
 {
-  measure(reps, row, [&](Signature& s) { return time_cgal(points, s); },
-          [&](DFP::Statistics& st, Signature& s) { return time_prediction(points, faces, st, s); });
+  measure_and_report(reps, report, row, [&](Signature& s) { return time_cgal(points, s); },
+                     [&](auto tag, DFP::Statistics& st, Signature& s) {
+                       DT dt;
+                       return time_call(dt, [&] { st = DFP::delaunay_from_prediction<decltype(tag)>(points, faces, dt); }, s);
+                     });
 }
 
 std::string percent(double f)
@@ -724,9 +807,7 @@ void run(const Options& o, const std::string& dist, std::size_t n, Report& repor
     shuffle_faces(shuffled_faces, rng);
   }
   if(o.wants("shuffled")) {
-    Row row = new_row("shuffled", "D=0, random order");
-    measure_prediction(reps, row, points, shuffled_faces);
-    report.add(row);
+    measure_prediction(reps, report, new_row("shuffled", "D=0, random order"), points, shuffled_faces);
   }
 
   // 2. D = 0, coherent: Hilbert-sorted points, faces in the order CGAL's DT of the sorted points
@@ -739,9 +820,7 @@ void run(const Options& o, const std::string& dist, std::size_t n, Report& repor
       const DTI t = build_indexed(sorted);
       mesh_faces = export_faces(t);
     }
-    Row row = new_row("hilbert", "D=0, Hilbert + mesh order");
-    measure_prediction(reps, row, sorted, mesh_faces);
-    report.add(row);
+    measure_prediction(reps, report, new_row("hilbert", "D=0, Hilbert + mesh order"), sorted, mesh_faces);
   }
 
   // 3. k random flips of the DT, faces in random order.
@@ -757,9 +836,8 @@ void run(const Options& o, const std::string& dist, std::size_t n, Report& repor
         faces = export_faces(flipped);
       }
       shuffle_faces(faces, rng);
-      Row row = new_row("flips", "k=" + percent(fraction) + " n (" + std::to_string(made) + ")");
-      measure_prediction(reps, row, points, faces);
-      report.add(row);
+      measure_prediction(reps, report, new_row("flips", "k=" + percent(fraction) + " n (" + std::to_string(made) + ")"),
+                         points, faces);
     }
   }
 
@@ -780,15 +858,14 @@ void run(const Options& o, const std::string& dist, std::size_t n, Report& repor
         moved_points[i] = moved(points[i], step, salt);
       std::ostringstream param;
       param << "sigma=" << sigma << " (" << std::setprecision(2) << step << ")";
-      Row row = new_row("move", param.str());
-      measure(reps, row, [&](Signature& s) { return time_cgal(moved_points, s); },
-              [&](DFP::Statistics& st, Signature& s) {
-                DT tr = base;
-                for(auto v = tr.finite_vertices_begin(); v != tr.finite_vertices_end(); ++v)
-                  v->set_point(moved(v->point(), step, salt));
-                return time_call(tr, [&] { st = DFP::make_delaunay(tr); }, s);
-              });
-      report.add(row);
+      measure_and_report(reps, report, new_row("move", param.str()),
+                         [&](Signature& s) { return time_cgal(moved_points, s); },
+                         [&](auto tag, DFP::Statistics& st, Signature& s) {
+                           DT tr = base;
+                           for(auto v = tr.finite_vertices_begin(); v != tr.finite_vertices_end(); ++v)
+                             v->set_point(moved(v->point(), step, salt));
+                           return time_call(tr, [&] { st = DFP::make_delaunay<decltype(tag)>(tr); }, s);
+                         });
     }
   }
 
@@ -796,9 +873,7 @@ void run(const Options& o, const std::string& dist, std::size_t n, Report& repor
   if(o.wants("random")) {
     Rng rng{seed_for(o.seed, "random/" + dist, n)};
     const std::vector<Face> faces = random_triples(n, 2 * n - 5, rng);
-    Row row = new_row("random", "2n-5 random triples");
-    measure_prediction(reps, row, points, faces);
-    report.add(row);
+    measure_prediction(reps, report, new_row("random", "2n-5 random triples"), points, faces);
   }
 
   // 6. Peak heap of case 1 (see namespace counting): ours vs CGAL's from-scratch build, each
@@ -853,6 +928,7 @@ void run(const Options& o, const std::string& dist, std::size_t n, Report& repor
         const auto damage = inverted_and_flat_faces(moved_tr);
         std::vector<Row> rows;
         std::vector<Our_call> calls;
+        std::vector<std::pair<std::size_t, std::size_t>> pairs; // (sequential, parallel) rows
         for(const Named_strategy& st : repair_strategies) {
           if(!o.runs(st.name))
             continue;
@@ -864,24 +940,34 @@ void run(const Options& o, const std::string& dist, std::size_t n, Report& repor
           row.repair_details = true;
           row.inverted = (long long)damage.first;
           row.flat = (long long)damage.second;
-          rows.push_back(row);
           const DFP::Strategy strategy = st.strategy;
-          calls.push_back([&moved_tr, strategy, t](DFP::Statistics& stats, Signature& s) {
+          auto call = [&moved_tr, strategy, t](auto tag, DFP::Statistics& stats, Signature& s) {
             DTI tr = moved_tr; // untimed copy
             return time_call(
                 tr,
                 [&] {
-                  stats = DFP::make_delaunay(tr, DFP::parameters::strategy(strategy, DFP::parameters::region_size(t)));
+                  stats = DFP::make_delaunay<decltype(tag)>(
+                      tr, DFP::parameters::strategy(strategy, DFP::parameters::region_size(t)));
                 },
                 s);
-          });
+          };
+          rows.push_back(row);
+          calls.push_back([call](DFP::Statistics& stats, Signature& s) { return call(CGAL::Sequential_tag(), stats, s); });
+#ifdef CGAL_LINKED_WITH_TBB
+          if(parallel_threads > 0) {
+            pairs.emplace_back(rows.size() - 1, rows.size());
+            rows.push_back(parallel_row(row));
+            calls.push_back([call](DFP::Statistics& stats, Signature& s) {
+              return in_arena([&] { return call(CGAL::Parallel_tag(), stats, s); });
+            });
+          }
+#endif
         }
         std::vector<Row*> row_pointers;
         for(Row& row : rows)
           row_pointers.push_back(&row);
         measure_all(reps, row_pointers, [&](Signature& s) { return time_cgal(moved_points, s); }, calls);
-        for(const Row& row : rows)
-          report.add(row);
+        report_with_speedups(report, rows, pairs);
       }
     }
   }
@@ -929,6 +1015,7 @@ void run(const Options& o, const std::string& dist, std::size_t n, Report& repor
 int main(int argc, char** argv)
 {
   const Options o = parse(argc, argv);
+  parallel_threads = o.threads;
 
   // Allocator policy (see keep_freed_memory()), fixed before the first allocation of any input.
   std::string policy = "glibc default (mmap threshold and trimming as glibc decides)";
@@ -990,6 +1077,10 @@ int main(int argc, char** argv)
            << "          moved by " << noises << " noise of scale sigma x sqrt(bounding box area / n);\n"
            << "          each repetition copies the moved DT (untimed). inverted/flat: finite faces of\n"
            << "          the moved DT that are clockwise or flat.\n";
+  if(o.threads > 0)
+    header << "threads:  rows '| par " << o.threads << "': the same call with CGAL::Parallel_tag in a tbb::task_arena of "
+           << o.threads << " threads,\n"
+           << "          in the same repetitions; CGAL's build stays sequential (it has no parallel 2D build)\n";
   header << "check:    every result of ours vs CGAL's: counts + hash of the face set (untimed)\n";
   std::printf("%s\n", header.str().c_str());
   Report report(o.csv);

@@ -43,6 +43,9 @@ lists per edge), and uses no geometry. The paper's \f$O(n + D \log n)\f$ bound o
 is not met: ear clipping is quadratic in the size of a hole, and Lawson's flips have no bound in
 \f$D\f$ (a call whose damage exceeds the budgets rebuilds from scratch instead).
 
+\tparam ConcurrencyTag `CGAL::Sequential_tag` (the default), `CGAL::Parallel_tag` or
+        `CGAL::Parallel_if_available_tag`: see \ref dfpParallel for what runs on several threads.
+        The result is the same triangulation whatever the tag and the number of threads.
 \tparam PointRange a random-access range of `DT::Point`.
 \tparam EdgeRange a range whose elements `e` give two integer indices into `points`, as
         `e[0]`, `e[1]` or as `e.first`, `e.second` (for example `std::pair<int, int>`).
@@ -62,7 +65,7 @@ is not met: ear clipping is quadratic in the size of a hole, and Lawson's flips 
 \throws Invalid_prediction if a point has a non-finite coordinate, or an edge has an index out
         of range or joins a point to itself. Then `dt` is unchanged.
 */
-template <class PointRange, class EdgeRange, class DT,
+template <class ConcurrencyTag = Sequential_tag, class PointRange, class EdgeRange, class DT,
           class NamedParameters = parameters::Default_named_parameters>
 Statistics delaunay_from_predicted_edges(const PointRange& points, const EdgeRange& edges, DT& dt,
                                          const NamedParameters& np = parameters::default_values())
@@ -75,9 +78,9 @@ Statistics delaunay_from_predicted_edges(const PointRange& points, const EdgeRan
   for(const auto& e : edges)
     read.push_back(internal::read_edge(e, k++, n));
   if(n >= (std::size_t(1) << 32))
-    return delaunay_from_prediction(points, std::vector<std::array<std::size_t, 3>>(), dt, np);
+    return delaunay_from_prediction<ConcurrencyTag>(points, std::vector<std::array<std::size_t, 3>>(), dt, np);
   const std::vector<std::array<std::size_t, 3>> triangles = internal::graph_triangles(n, read);
-  return delaunay_from_prediction(points, triangles, dt, np);
+  return delaunay_from_prediction<ConcurrencyTag>(points, triangles, dt, np);
 }
 
 } // namespace Delaunay_from_prediction

@@ -13,6 +13,7 @@
 #include <CGAL/Delaunay_from_prediction/Statistics.h>
 #include <CGAL/Delaunay_from_prediction/parameters.h>
 #include <CGAL/Delaunay_from_prediction/internal/carve_repair.h>
+#include <CGAL/Delaunay_from_prediction/internal/concurrency.h>
 #include <CGAL/Delaunay_from_prediction/internal/flips.h>
 #include <CGAL/Delaunay_from_prediction/internal/hierarchy.h>
 #include <CGAL/Delaunay_from_prediction/internal/input_check.h>
@@ -53,6 +54,9 @@ be kept are left out or carved, the holes retriangulated and the vertices left w
 reinserted, then the flips run (see the user manual, "Local Repair"). A prediction too damaged
 for that to pay off is rebuilt from scratch (`Statistics::fell_back`).
 
+\tparam ConcurrencyTag `CGAL::Sequential_tag` (the default), `CGAL::Parallel_tag` or
+        `CGAL::Parallel_if_available_tag`: see \ref dfpParallel for what runs on several threads.
+        The result is the same triangulation whatever the tag and the number of threads.
 \tparam PointRange a random-access range of `DT::Point`.
 \tparam FaceRange a range whose elements `t` give three integer indices `t[0]`, `t[1]`, `t[2]`
         into `points` (for example `std::array<int, 3>` or `std::vector<std::size_t>`).
@@ -99,13 +103,15 @@ With traits whose predicates are not exact (e.g. `Simple_cartesian<double>`), th
 is built from scratch, decided by exact predicates on the coordinates rounded to double
 (`Statistics::fell_back`): see \ref dfpInexactKernels.
 */
-template <class PointRange, class FaceRange, class DT,
+template <class ConcurrencyTag = Sequential_tag, class PointRange, class FaceRange, class DT,
           class NamedParameters = parameters::Default_named_parameters>
 Statistics delaunay_from_prediction(const PointRange& points, const FaceRange& faces, DT& dt,
                                     const NamedParameters& np = parameters::default_values())
 {
+  (void)internal::runs_in_parallel<ConcurrencyTag>(); // checks the tag: sequential in this version (manual, "Parallel Mode")
   if constexpr(internal::is_triangulation_hierarchy<DT>::value) { // level 0, then the upper levels
-    return internal::with_levels_rebuilt(dt, [&](auto& level0) { return delaunay_from_prediction(points, faces, level0, np); });
+    return internal::with_levels_rebuilt(
+        dt, [&](auto& level0) { return delaunay_from_prediction<ConcurrencyTag>(points, faces, level0, np); });
   } else { // the body below, not instantiated for a hierarchy
   using parameters::choose_parameter;
   using parameters::get_parameter;
@@ -160,6 +166,9 @@ With traits whose predicates are not exact (e.g. `Simple_cartesian<double>`), th
 always rebuilt around the same vertex objects, decided by exact predicates on the coordinates
 rounded to double (`Statistics::fell_back`): see \ref dfpInexactKernels.
 
+\tparam ConcurrencyTag `CGAL::Sequential_tag` (the default), `CGAL::Parallel_tag` or
+        `CGAL::Parallel_if_available_tag`: see \ref dfpParallel for what runs on several threads.
+        The result is the same triangulation whatever the tag and the number of threads.
 \tparam Triangulation a `CGAL::Triangulation_2<Gt, Tds>` or `CGAL::Delaunay_triangulation_2<Gt, Tds>`,
         for any triangulation data structure, or a `CGAL::Triangulation_hierarchy_2` of one (its
         level 0 is repaired in place, then its upper levels are sampled anew at the moved points).
@@ -186,11 +195,13 @@ rounded to double (`Statistics::fell_back`): see \ref dfpInexactKernels.
 \throws Invalid_prediction if two vertices are at the same point, naming both (by their rank
         in finite-vertex order). Then `tr` is unchanged.
 */
-template <class Triangulation, class NamedParameters = parameters::Default_named_parameters>
+template <class ConcurrencyTag = Sequential_tag, class Triangulation,
+          class NamedParameters = parameters::Default_named_parameters>
 Statistics make_delaunay(Triangulation& tr, const NamedParameters& np = parameters::default_values())
 {
+  constexpr bool parallel = internal::runs_in_parallel<ConcurrencyTag>();
   if constexpr(internal::is_triangulation_hierarchy<Triangulation>::value) { // level 0, then the upper levels
-    return internal::with_levels_rebuilt(tr, [&](auto& level0) { return make_delaunay(level0, np); });
+    return internal::with_levels_rebuilt(tr, [&](auto& level0) { return make_delaunay<ConcurrencyTag>(level0, np); });
   } else { // the body below, not instantiated for a hierarchy
   using parameters::choose_parameter;
   using parameters::get_parameter;
@@ -226,15 +237,22 @@ Statistics make_delaunay(Triangulation& tr, const NamedParameters& np = paramete
   internal::Flip_log<Triangulation> flips_before_carve;
   std::vector<Face_handle> touched;
   // Lawson's flips start during certification, except for the t-division, which plans its
-  // regions from the edges that fail in the prediction as given.
+  // regions from the edges that fail in the prediction as given, and in parallel, where the
+  // faces are only read while they are certified, block by block (tds_certify.h).
+  const bool flip_inline = !divide && !parallel;
   internal::Inline_flips<Triangulation> inline_flips{max_flips, stats.flips, touched, flips_before_carve};
-  internal::Outcome why = strategy == Strategy::rebuild || strategy == Strategy::spanning_tree
-                        ? internal::Outcome::rebuild_requested
-                        : internal::certify_triangulation(tr, stack, stats.edges_tested, hull_is_convex,
-                                                          carve || divide ? &bad : nullptr, max_bad,
-                                                          divide ? nullptr : &inline_flips);
+  internal::Outcome why = internal::Outcome::rebuild_requested;
+  if(strategy != Strategy::rebuild && strategy != Strategy::spanning_tree && parallel) {
+    why = internal::certify_faces_in_blocks(tr, true, stack, stats.edges_tested, carve || divide ? &bad : nullptr,
+                                            max_bad);
+    hull_is_convex = why == internal::Outcome::ok && internal::hull_is_convex_and_wound_once(tr);
+  } else if(strategy != Strategy::rebuild && strategy != Strategy::spanning_tree) {
+    why = internal::certify_triangulation(tr, stack, stats.edges_tested, hull_is_convex,
+                                          carve || divide ? &bad : nullptr, max_bad,
+                                          flip_inline ? &inline_flips : nullptr);
+  }
   if(why == internal::Outcome::ok)
-    stats.edges_not_locally_delaunay = divide ? stack.size() : inline_flips.edges_failing;
+    stats.edges_not_locally_delaunay = flip_inline ? inline_flips.edges_failing : stack.size();
   // Lawson needs at least a flip per failing edge: past the budget, the flips are wasted.
   if(why == internal::Outcome::ok && stats.edges_not_locally_delaunay > max_flips)
     why = internal::Outcome::flip_budget_exhausted;

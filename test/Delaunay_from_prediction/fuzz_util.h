@@ -85,6 +85,7 @@ struct Case
   int split_method = -1;      // Split_method value, -1: not given
   bool screen = true;         // screen_prediction
   bool t2 = false;            // make_delaunay on a plain Triangulation_2
+  bool parallel = false;      // make_delaunay with CGAL::Parallel_if_available_tag
   unsigned param_seed = 0;    // random_seed for brio / split (0: not given)
   double sample_probability = -1;
   XYs pts;                    // points; make_delaunay: initial points; imprecise: centres
@@ -106,6 +107,7 @@ inline std::string describe(const Case& c)
   if(c.split_method >= 0) s << " split_method=" << c.split_method;
   if(!c.screen) s << " screen_prediction=false";
   if(c.t2) s << " triangulation=Triangulation_2";
+  if(c.parallel) s << " concurrency=Parallel_if_available_tag";
   if(c.param_seed) s << " random_seed=" << c.param_seed;
   if(c.sample_probability > 0) s << " sample_probability=" << c.sample_probability;
   return s.str();

@@ -3,7 +3,8 @@
 // Author(s): Delaunay_from_prediction contributors
 //
 // Differential fuzzer: random point families x prediction families x kernels x entry points x
-// named parameters, each result compared with CGAL's Delaunay_triangulation_2 built from
+// named parameters x, for make_delaunay, the concurrency tag (Sequential_tag or
+// Parallel_if_available_tag), each result compared with CGAL's Delaunay_triangulation_2 built from
 // scratch with the same kernel (as index triples, vertex sets and info), plus the consistency of
 // the Statistics, is_valid(), and "malformed input throws Invalid_prediction and changes
 // nothing". Seeded and budgeted; cases run in forked children so that a crash or a hang is
@@ -422,6 +423,7 @@ static Case gen_case(unsigned long long seed, long long k)
     c.pts = dedupe(c.pts);
     n = c.pts.size();
     c.t2 = rng.get_bool();
+    c.parallel = rng.get_bool();
     c.output = rng.get_bool() ? O_INFO : O_PLAIN;
     c.pred_family = pick(rng, {5, 30, 30, 10, 15}) + F_MD_NONE;
     c.pts2 = c.pts;
@@ -805,14 +807,21 @@ void run_md(Checker& ck, const Case& c, bool exact)
     handles[i]->set_point(P1[i]);
   const dfp_test::Snapshot<Tr> before(tr);
   DFP::Statistics s;
-  auto call = [&] {
+  auto call_with = [&](auto tag) {
+    using Tag = decltype(tag);
     if(c.strategy < 0 && c.max_flips < 0)
-      s = DFP::make_delaunay(tr);
+      s = DFP::make_delaunay<Tag>(tr);
     else
-      s = DFP::make_delaunay(tr, DFP::parameters::strategy(
-                                     c.strategy >= 0 ? DFP::Strategy(c.strategy) : DFP::Strategy::automatic,
-                                     DFP::parameters::max_flips(c.max_flips >= 0 ? std::size_t(c.max_flips)
-                                                                                 : 3 * P0.size() / 4 + 64)));
+      s = DFP::make_delaunay<Tag>(tr, DFP::parameters::strategy(
+                                          c.strategy >= 0 ? DFP::Strategy(c.strategy) : DFP::Strategy::automatic,
+                                          DFP::parameters::max_flips(c.max_flips >= 0 ? std::size_t(c.max_flips)
+                                                                                      : 3 * P0.size() / 4 + 64)));
+  };
+  auto call = [&] {
+    if(c.parallel)
+      call_with(CGAL::Parallel_if_available_tag());
+    else
+      call_with(CGAL::Sequential_tag());
   };
   std::set<std::pair<double, double>> seen;
   bool distinct = true;

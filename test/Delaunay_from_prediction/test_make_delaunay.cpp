@@ -37,7 +37,8 @@ DFP::Statistics make_and_check(Tr& tr, const Handles<Tr>& handles,
   const Points points = current_points(handles);
   const std::size_t faces_before = tr.dimension() == 2 ? tr.number_of_faces() : 0;
   const std::size_t inverted = inverted_faces(tr);
-  const DFP::Statistics s = DFP::make_delaunay(tr, np);
+  const bool hull_was_convex = tr.dimension() == 2 && DFP::internal::hull_is_convex_and_wound_once(tr);
+  const DFP::Statistics s = with_concurrency([&](auto tag) { return DFP::make_delaunay<decltype(tag)>(tr, np); });
   check_handles(tr, handles, points);
   check_is_cgal_delaunay(tr, points); // info i is point i: also checks the info
   DFP_CHECK_MSG(s.faces_in == faces_before, s.faces_in << " vs " << faces_before);
@@ -63,7 +64,12 @@ DFP::Statistics make_and_check(Tr& tr, const Handles<Tr>& handles,
                     s.points_reinserted << " reinserted, " << s.faces_carved << " faces carved");
     }
     if(inverted == 0) {
-      DFP_CHECK((s.flips == 0) == (s.edges_not_locally_delaunay == 0));
+      // Failing edges need flips; with a convex hull, flips need failing edges (a hull that is
+      // not convex is flipped convex first, which may leave no edge failing).
+      DFP_CHECK_MSG(s.edges_not_locally_delaunay == 0 || s.flips > 0,
+                    s.flips << " flips, " << s.edges_not_locally_delaunay << " failing");
+      DFP_CHECK_MSG(!hull_was_convex || s.flips == 0 || s.edges_not_locally_delaunay > 0,
+                    s.flips << " flips, " << s.edges_not_locally_delaunay << " failing");
       DFP_CHECK(s.faces_certified + 2 * s.flips >= s.faces_in);
     }
   }
@@ -401,7 +407,7 @@ void expect_collision(Tr& tr, const Handles<Tr>& handles, std::size_t a, std::si
   const std::size_t rank_a = finite_rank(tr, handles[a]), rank_b = finite_rank(tr, handles[b]);
   bool thrown = false;
   try {
-    DFP::make_delaunay(tr);
+    with_concurrency([&](auto tag) { return DFP::make_delaunay<decltype(tag)>(tr); });
   } catch(const DFP::Invalid_prediction& e) {
     thrown = true;
     const std::string what = e.what();
@@ -570,10 +576,14 @@ void test_type(const char* name, CGAL::Random& rng)
 int main()
 {
   CGAL::Random rng(4242);
-  test_type<DT_plain<K>>("Delaunay_triangulation_2 without info", rng);
-  test_type<DT_with_info<K>>("Delaunay_triangulation_2 with size_t info", rng);
-  test_type<T2_plain<K>>("Triangulation_2 without info", rng);
-  test_type<T2_with_info<K, int>>("Triangulation_2 with int info", rng);
+  // Every call of make_and_check() and expect_collision() with each concurrency: the parallel
+  // certification cuts even these small triangulations into blocks of 32 faces or more.
+  for_each_concurrency([&] {
+    test_type<DT_plain<K>>("Delaunay_triangulation_2 without info", rng);
+    test_type<DT_with_info<K>>("Delaunay_triangulation_2 with size_t info", rng);
+    test_type<T2_plain<K>>("Triangulation_2 without info", rng);
+    test_type<T2_with_info<K, int>>("Triangulation_2 with int info", rng);
+  });
   DFP_RUN(test_flip_log_survives_rollback(rng));
   DFP_RUN(test_colored<DT_colored<K>>("Delaunay_triangulation_2 with a user's vertex base", rng));
   DFP_RUN(test_colored<T2_colored<K>>("Triangulation_2 with a user's vertex base", rng));

@@ -37,6 +37,10 @@
 #include <utility>
 #include <vector>
 
+#ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/global_control.h>
+#endif
+
 #if defined(__unix__) || defined(__APPLE__)
 #include <sys/types.h>
 #include <sys/wait.h>
@@ -227,6 +231,55 @@ DFP::Statistics with_mode(Mode m, const F& body)
   case Mode::no_flips: return body(P::max_flips(std::size_t(0)));
   default: return body(P::strategy(DFP::Strategy::rebuild));
   }
+}
+
+// The concurrency the entry points run with: CGAL::Sequential_tag, or
+// CGAL::Parallel_if_available_tag with TBB limited to one thread or to two (without TBB the
+// tag is CGAL::Sequential_tag and the thread count means nothing).
+enum class Concurrency { sequential, parallel_1_thread, parallel_2_threads };
+const Concurrency all_concurrencies[] = {Concurrency::sequential, Concurrency::parallel_1_thread,
+                                         Concurrency::parallel_2_threads};
+
+inline Concurrency& current_concurrency()
+{
+  static Concurrency c = Concurrency::sequential;
+  return c;
+}
+
+inline const char* name_of(Concurrency c)
+{
+  switch(c) {
+  case Concurrency::sequential: return "Sequential_tag";
+  case Concurrency::parallel_1_thread: return "Parallel_if_available_tag, 1 thread";
+  default: return "Parallel_if_available_tag, 2 threads";
+  }
+}
+
+// Runs body() with each concurrency in turn (current_concurrency() says which), under a case
+// name that says it, with TBB's threads limited as it says.
+template <class F>
+void for_each_concurrency(const F& body)
+{
+  for(const Concurrency c : all_concurrencies) {
+    Scope scope(name_of(c));
+    current_concurrency() = c;
+#ifdef CGAL_LINKED_WITH_TBB
+    tbb::global_control threads(tbb::global_control::max_allowed_parallelism,
+                                c == Concurrency::parallel_2_threads ? 2 : 1);
+#endif
+    body();
+  }
+  current_concurrency() = Concurrency::sequential;
+}
+
+// Calls call(tag) with the tag of current_concurrency(): a call site writes
+// with_concurrency([&](auto tag) { return DFP::make_delaunay<decltype(tag)>(tr); }).
+template <class F>
+auto with_concurrency(const F& call)
+{
+  if(current_concurrency() == Concurrency::sequential)
+    return call(CGAL::Sequential_tag());
+  return call(CGAL::Parallel_if_available_tag());
 }
 
 // How much slower this build runs than an optimized one, for time limits: unoptimized or

@@ -55,7 +55,8 @@ struct Statistics
   /// number of those edges found not locally Delaunay (the measure \f$D_{local}\f$ of the
   /// paper when the prediction is a triangulation). `make_delaunay()` flips during its
   /// certification pass: it counts the edges the pass found failing before a flip reached
-  /// them, between 1 and \f$D_{local}\f$ (0 exactly when \f$D_{local} = 0\f$).
+  /// them, between 1 and \f$D_{local}\f$ (0 exactly when \f$D_{local} = 0\f$); with
+  /// `CGAL::Parallel_tag` (TBB linked), whose pass only reads, it counts them all.
   std::size_t edges_not_locally_delaunay = 0;
   /// number of points used by no predicted face that was kept (a point used only by
   /// degenerate faces counts); they are inserted afterwards, or merged as duplicates.

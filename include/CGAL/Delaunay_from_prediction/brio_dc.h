@@ -13,6 +13,7 @@
 #include <CGAL/Delaunay_from_prediction/Statistics.h>
 #include <CGAL/Delaunay_from_prediction/parameters.h>
 #include <CGAL/Delaunay_from_prediction/internal/brio_dc_insertion.h>
+#include <CGAL/Delaunay_from_prediction/internal/concurrency.h>
 #include <CGAL/Delaunay_from_prediction/internal/hierarchy.h>
 #include <CGAL/Delaunay_from_prediction/internal/input_check.h>
 #include <CGAL/Delaunay_from_prediction/internal/random.h>
@@ -82,6 +83,9 @@ restart, \f$q = 1/8\f$ by default): no bound is proven for it. Its walks were me
 The result is exactly the triangulation \cgal's `Delaunay_triangulation_2` builds from the same
 points (co-circular ties broken by \cgal's symbolic perturbation).
 
+\tparam ConcurrencyTag `CGAL::Sequential_tag` (the default), `CGAL::Parallel_tag` or
+        `CGAL::Parallel_if_available_tag`: see \ref dfpParallel for what runs on several threads.
+        The result is the same triangulation whatever the tag and the number of threads.
 \tparam PointRange a random-access range of `DT::Point`.
 \tparam DT a `CGAL::Delaunay_triangulation_2<Gt, Tds>`. If its vertices have an `info()`
         assignable from `std::size_t`, every vertex's `info()` is set to the index of its point
@@ -117,11 +121,13 @@ With traits whose predicates are not exact (e.g. `Simple_cartesian<double>`), th
 is built from scratch, decided by exact predicates on the coordinates rounded to double
 (`Statistics::fell_back`): see \ref dfpInexactKernels.
 */
-template <class PointRange, class DT, class NamedParameters = parameters::Default_named_parameters>
+template <class ConcurrencyTag = Sequential_tag, class PointRange, class DT,
+          class NamedParameters = parameters::Default_named_parameters>
 Statistics brio_dc_delaunay(const PointRange& points, DT& dt, const NamedParameters& np = parameters::default_values())
 {
+  constexpr bool parallel = internal::runs_in_parallel<ConcurrencyTag>();
   if constexpr(internal::is_triangulation_hierarchy<DT>::value) { // level 0, then the upper levels
-    return internal::with_levels_rebuilt(dt, [&](auto& level0) { return brio_dc_delaunay(points, level0, np); });
+    return internal::with_levels_rebuilt(dt, [&](auto& level0) { return brio_dc_delaunay<ConcurrencyTag>(points, level0, np); });
   } else { // the body below, not instantiated for a hierarchy
   using parameters::choose_parameter;
   using parameters::get_parameter;
@@ -147,7 +153,7 @@ Statistics brio_dc_delaunay(const PointRange& points, DT& dt, const NamedParamet
     internal::build_with_exact_predicates(dt, point_begin, n, stats); // inexact predicates: decided by exact ones
     return stats;
   }
-  internal::brio_dc_insert(dt, point_begin, n, seed, probability, stats);
+  internal::brio_dc_insert(dt, point_begin, n, seed, probability, stats, parallel);
   return stats;
   } // not a hierarchy
 }

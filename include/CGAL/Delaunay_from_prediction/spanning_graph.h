@@ -11,6 +11,7 @@
 
 #include <CGAL/Delaunay_from_prediction/Statistics.h>
 #include <CGAL/Delaunay_from_prediction/parameters.h>
+#include <CGAL/Delaunay_from_prediction/internal/concurrency.h>
 #include <CGAL/Delaunay_from_prediction/internal/hierarchy.h>
 #include <CGAL/Delaunay_from_prediction/internal/input_check.h>
 #include <CGAL/Delaunay_from_prediction/internal/spanning_tree_insertion.h>
@@ -74,6 +75,9 @@ three cases).
 The result is exactly the triangulation CGAL's `Delaunay_triangulation_2` builds from the same
 points (co-circular ties broken by CGAL's symbolic perturbation), whatever the graph.
 
+\tparam ConcurrencyTag `CGAL::Sequential_tag` (the default), `CGAL::Parallel_tag` or
+        `CGAL::Parallel_if_available_tag`: see \ref dfpParallel for what runs on several threads.
+        The result is the same triangulation whatever the tag and the number of threads.
 \tparam PointRange a random-access range of `DT::Point`.
 \tparam EdgeRange a range of edges, each a `std::pair`, `std::tuple` or `std::array` of two
         integer indices into `points`, or anything with `operator[](0..1)` returning one.
@@ -98,13 +102,15 @@ With traits whose predicates are not exact (e.g. `Simple_cartesian<double>`), th
 is built from scratch, decided by exact predicates on the coordinates rounded to double
 (`Statistics::fell_back`): see \ref dfpInexactKernels.
 */
-template <class PointRange, class EdgeRange, class DT,
+template <class ConcurrencyTag = Sequential_tag, class PointRange, class EdgeRange, class DT,
           class NamedParameters = parameters::Default_named_parameters>
 Statistics delaunay_from_spanning_graph(const PointRange& points, const EdgeRange& edges, DT& dt,
                                         const NamedParameters& np = parameters::default_values())
 {
+  (void)internal::runs_in_parallel<ConcurrencyTag>(); // checks the tag: sequential in this version (manual, "Parallel Mode")
   if constexpr(internal::is_triangulation_hierarchy<DT>::value) { // level 0, then the upper levels
-    return internal::with_levels_rebuilt(dt, [&](auto& level0) { return delaunay_from_spanning_graph(points, edges, level0, np); });
+    return internal::with_levels_rebuilt(
+        dt, [&](auto& level0) { return delaunay_from_spanning_graph<ConcurrencyTag>(points, edges, level0, np); });
   } else { // the body below, not instantiated for a hierarchy
   (void)np;
   Statistics stats;

@@ -30,9 +30,10 @@ namespace internal {
 // gradation of samples S_0 = P, S_1, ... drawn from the nearest-neighbour graph of each
 // level, the last sample inserted by CGAL's insertion, then each level's other points located
 // by a walk from their graph neighbour's vertex. Fills `stats`; the caller checked the input.
+// With `parallel`, the nearest-neighbour searches run on TBB's threads (the same graphs).
 template <class DT, class PointIterator>
 void brio_dc_insert(DT& dt, PointIterator point_begin, std::size_t n, std::uint64_t seed, double probability,
-                    Statistics& stats)
+                    Statistics& stats, bool parallel = false)
 {
   using Point = typename DT::Point;
   using Vertex_handle = typename DT::Vertex_handle;
@@ -67,7 +68,7 @@ void brio_dc_insert(DT& dt, PointIterator point_begin, std::size_t n, std::uint6
         xy[2 * k] = CGAL::to_double(point[members[k]].x());
         xy[2 * k + 1] = CGAL::to_double(point[members[k]].y());
       }
-      internal::nearest_neighbour_graph(xy.data(), m, order, level.nn);
+      internal::nearest_neighbour_graph(xy.data(), m, order, level.nn, parallel);
       level.members.resize(m);
       for(std::size_t k = 0; k < m; ++k)
         level.members[k] = members[order[k]];

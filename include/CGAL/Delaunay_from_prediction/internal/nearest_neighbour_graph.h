@@ -9,6 +9,7 @@
 #ifndef CGAL_DELAUNAY_FROM_PREDICTION_INTERNAL_NEAREST_NEIGHBOUR_GRAPH_H
 #define CGAL_DELAUNAY_FROM_PREDICTION_INTERNAL_NEAREST_NEIGHBOUR_GRAPH_H
 
+#include <CGAL/Delaunay_from_prediction/internal/concurrency.h>
 #include <CGAL/Delaunay_from_prediction/internal/grid.h>
 #include <CGAL/Delaunay_from_prediction/internal/spanning_tree_insertion.h>
 #include <CGAL/Delaunay_from_prediction/internal/spatial_order.h>
@@ -122,9 +123,12 @@ void read_grid_near(const Nng_cells& g, std::uint32_t base, double x, double y, 
 }
 
 // nearest_neighbour_graph() on coordinates in a frame where no squared distance that matters
-// overflows (see there); `depth` counts the refinements.
+// overflows (see there); `depth` counts the refinements. With `parallel`, the searches (each
+// point's own, reading the grid and writing only its own entries) run in blocks of cells on
+// TBB's threads; the graph is the same.
 inline void nearest_neighbour_graph_in_frame(const double* xy, std::size_t m, std::vector<std::uint32_t>& order,
-                                             std::vector<std::uint32_t>& nn, int depth, Nng_cells* grid_out)
+                                             std::vector<std::uint32_t>& nn, int depth, Nng_cells* grid_out,
+                                             bool parallel = false)
 {
   constexpr std::size_t crowded = 32, budget = 512;
   // At most 4096 x 4096 cells (2^22 in a line): about two points a cell up to 2^25 points, and
@@ -222,113 +226,117 @@ inline void nearest_neighbour_graph_in_frame(const double* xy, std::size_t m, st
       }
     }
   }
-  for(std::size_t c = 0; c < cells; ++c) {
-    const long cx = long(c % side_x), cy = long(c / side_x);
-    const double cell_x0 = xmin + double(cx) * cell_width, cell_y0 = ymin + double(cy) * cell_height;
-    // The 3 x 3 cells around (fewer at the grid's sides): three runs of the grid order.
-    const std::size_t col0 = std::size_t(cx > 0 ? cx - 1 : 0), col1 = (std::min)(std::size_t(cx) + 1, side_x - 1);
-    const std::size_t row0 = std::size_t(cy > 0 ? cy - 1 : 0), row1 = (std::min)(std::size_t(cy) + 1, side_y - 1);
-    for(std::uint32_t k = start[c]; k < start[c + 1]; ++k) {
-      const double x = p[2 * k], y = p[2 * k + 1];
-      double b = best[k];
-      std::uint32_t bk = nn[k];
-      // Branch-free: whether a candidate is nearer is not predictable.
-      auto consider = [&](std::uint32_t j) {
-        const double dx = p[2 * j] - x, dy = p[2 * j + 1] - y;
-        const double d = dx * dx + dy * dy;
-        // (Never the point itself; `&` and `|`: no branch on the comparisons.)
-        const bool nearer = (j != k) & ((d < b) | ((d == b) & (j < bk)));
-        b = nearer ? d : b;
-        bk = nearer ? j : bk;
-      };
-      // The distance from the point to the sides of its cell (a degenerate axis aside).
-      double margin = std::numeric_limits<double>::infinity();
-      if(cell_width > 0)
-        margin = (std::min)({margin, x - cell_x0, cell_x0 + cell_width - x});
-      if(cell_height > 0)
-        margin = (std::min)({margin, y - cell_y0, cell_y0 + cell_height - y});
-      margin = (std::max)(0.0, margin);
-      long r = 1;
-      std::size_t read = 0;
-      bool searched = false;
-      if(!refined(c)) {
-        // The common case: the cells around are at most three runs of the grid order (rows).
-        std::uint32_t run[3][2];
-        std::size_t total = 0, runs = 0;
-        for(std::size_t row = row0; row <= row1; ++row, ++runs) {
-          run[runs][0] = start[row * side_x + col0];
-          run[runs][1] = start[row * side_x + col1 + 1];
-          total += run[runs][1] - run[runs][0];
-        }
-        if(total <= 4 * crowded) { // else dense cells around: the rings below read less
-          // On copies of b and bk: `consider` passes their addresses on, which would keep
-          // them in memory in this, the hottest loop. Candidates read in increasing position
-          // need only the strict comparison for the tie rule.
-          double fast_b = b;
-          std::uint32_t fast_bk = bk;
-          for(std::size_t t = 0; t < runs; ++t)
-            for(std::uint32_t j = run[t][0]; j < run[t][1]; ++j) {
-              const double dx = p[2 * j] - x, dy = p[2 * j + 1] - y;
-              const double d = j != k ? dx * dx + dy * dy : std::numeric_limits<double>::infinity();
-              const bool nearer = d < fast_b;
-              fast_b = nearer ? d : fast_b;
-              fast_bk = nearer ? j : fast_bk;
-            }
-          b = fast_b;
-          bk = fast_bk;
-          searched = b <= (shorter + margin) * (shorter + margin);
-          r = 2;
-          read = total;
-        }
-      }
-      if(!searched && r == 1) {
-        if(!refined(c)) { // (a cell is that large only when it holds every point: equal points)
-          for(std::uint32_t j = start[c]; j < start[c + 1] && read < budget && b > 0; ++j, ++read)
-            consider(j);
-          read = 0;
-        }
-        searched = b <= margin * margin;
-      }
-      for(; !searched; ++r) {
-        // Cells at Chebyshev distance r from (cx, cy).
-        const long x0 = cx - r, x1 = cx + r, y0 = cy - r, y1 = cy + r;
-        bool any_cell = false;
-        for(long gy = (std::max)(0L, y0); gy <= (std::min)(long(side_y) - 1, y1) && read < budget; ++gy) {
-          const bool edge_row = gy == y0 || gy == y1;
-          for(long gx = (std::max)(0L, x0); gx <= (std::min)(long(side_x) - 1, x1) && read < budget;
-              gx += (edge_row || gx == x1) ? 1 : (std::max)(1L, x1 - gx)) {
-            any_cell = true;
-            // A cell farther than the best candidate is skipped (its box enlarged by a rounding
-            // slack: a point's cell comes from a rounded division).
-            const double bx = xmin + double(gx) * cell_width, by = ymin + double(gy) * cell_height;
-            const double ex = 1e-9 * cell_width, ey = 1e-9 * cell_height;
-            const double ddx = (std::max)({0.0, bx - ex - x, x - (bx + cell_width + ex)});
-            const double ddy = (std::max)({0.0, by - ey - y, y - (by + cell_height + ey)});
-            const double cell_distance2 = ddx * ddx + ddy * ddy;
-            if(cell_distance2 > b)
-              continue;
-            const std::size_t cell = std::size_t(gy) * side_x + std::size_t(gx);
-            if(refined(cell)) {
-              read_grid_near(sub[sub_of[cell]], start[cell], x, y, b, read, budget, consider);
-              continue;
-            }
-            const std::uint32_t last = (std::min)(start[cell + 1], std::uint32_t(start[cell] + (budget - read)));
-            for(std::uint32_t j = start[cell]; j < last; ++j)
-              consider(j);
-            read += last - start[cell];
+  // Blocks of 4096 cells (about 8192 points).
+  constexpr std::size_t block_cells = 4096;
+  for_each_block(parallel, (cells + block_cells - 1) / block_cells, [&](std::size_t block) {
+    for(std::size_t c = block * block_cells; c < (std::min)(cells, (block + 1) * block_cells); ++c) {
+      const long cx = long(c % side_x), cy = long(c / side_x);
+      const double cell_x0 = xmin + double(cx) * cell_width, cell_y0 = ymin + double(cy) * cell_height;
+      // The 3 x 3 cells around (fewer at the grid's sides): three runs of the grid order.
+      const std::size_t col0 = std::size_t(cx > 0 ? cx - 1 : 0), col1 = (std::min)(std::size_t(cx) + 1, side_x - 1);
+      const std::size_t row0 = std::size_t(cy > 0 ? cy - 1 : 0), row1 = (std::min)(std::size_t(cy) + 1, side_y - 1);
+      for(std::uint32_t k = start[c]; k < start[c + 1]; ++k) {
+        const double x = p[2 * k], y = p[2 * k + 1];
+        double b = best[k];
+        std::uint32_t bk = nn[k];
+        // Branch-free: whether a candidate is nearer is not predictable.
+        auto consider = [&](std::uint32_t j) {
+          const double dx = p[2 * j] - x, dy = p[2 * j + 1] - y;
+          const double d = dx * dx + dy * dy;
+          // (Never the point itself; `&` and `|`: no branch on the comparisons.)
+          const bool nearer = (j != k) & ((d < b) | ((d == b) & (j < bk)));
+          b = nearer ? d : b;
+          bk = nearer ? j : bk;
+        };
+        // The distance from the point to the sides of its cell (a degenerate axis aside).
+        double margin = std::numeric_limits<double>::infinity();
+        if(cell_width > 0)
+          margin = (std::min)({margin, x - cell_x0, cell_x0 + cell_width - x});
+        if(cell_height > 0)
+          margin = (std::min)({margin, y - cell_y0, cell_y0 + cell_height - y});
+        margin = (std::max)(0.0, margin);
+        long r = 1;
+        std::size_t read = 0;
+        bool searched = false;
+        if(!refined(c)) {
+          // The common case: the cells around are at most three runs of the grid order (rows).
+          std::uint32_t run[3][2];
+          std::size_t total = 0, runs = 0;
+          for(std::size_t row = row0; row <= row1; ++row, ++runs) {
+            run[runs][0] = start[row * side_x + col0];
+            run[runs][1] = start[row * side_x + col1 + 1];
+            total += run[runs][1] - run[runs][0];
+          }
+          if(total <= 4 * crowded) { // else dense cells around: the rings below read less
+            // On copies of b and bk: `consider` passes their addresses on, which would keep
+            // them in memory in this, the hottest loop. Candidates read in increasing position
+            // need only the strict comparison for the tie rule.
+            double fast_b = b;
+            std::uint32_t fast_bk = bk;
+            for(std::size_t t = 0; t < runs; ++t)
+              for(std::uint32_t j = run[t][0]; j < run[t][1]; ++j) {
+                const double dx = p[2 * j] - x, dy = p[2 * j + 1] - y;
+                const double d = j != k ? dx * dx + dy * dy : std::numeric_limits<double>::infinity();
+                const bool nearer = d < fast_b;
+                fast_b = nearer ? d : fast_b;
+                fast_bk = nearer ? j : fast_bk;
+              }
+            b = fast_b;
+            bk = fast_bk;
+            searched = b <= (shorter + margin) * (shorter + margin);
+            r = 2;
+            read = total;
           }
         }
-        const double reach = double(r) * shorter + margin;
-        searched = !any_cell || b <= reach * reach || read >= budget || b == 0;
+        if(!searched && r == 1) {
+          if(!refined(c)) { // (a cell is that large only when it holds every point: equal points)
+            for(std::uint32_t j = start[c]; j < start[c + 1] && read < budget && b > 0; ++j, ++read)
+              consider(j);
+            read = 0;
+          }
+          searched = b <= margin * margin;
+        }
+        for(; !searched; ++r) {
+          // Cells at Chebyshev distance r from (cx, cy).
+          const long x0 = cx - r, x1 = cx + r, y0 = cy - r, y1 = cy + r;
+          bool any_cell = false;
+          for(long gy = (std::max)(0L, y0); gy <= (std::min)(long(side_y) - 1, y1) && read < budget; ++gy) {
+            const bool edge_row = gy == y0 || gy == y1;
+            for(long gx = (std::max)(0L, x0); gx <= (std::min)(long(side_x) - 1, x1) && read < budget;
+                gx += (edge_row || gx == x1) ? 1 : (std::max)(1L, x1 - gx)) {
+              any_cell = true;
+              // A cell farther than the best candidate is skipped (its box enlarged by a rounding
+              // slack: a point's cell comes from a rounded division).
+              const double bx = xmin + double(gx) * cell_width, by = ymin + double(gy) * cell_height;
+              const double ex = 1e-9 * cell_width, ey = 1e-9 * cell_height;
+              const double ddx = (std::max)({0.0, bx - ex - x, x - (bx + cell_width + ex)});
+              const double ddy = (std::max)({0.0, by - ey - y, y - (by + cell_height + ey)});
+              const double cell_distance2 = ddx * ddx + ddy * ddy;
+              if(cell_distance2 > b)
+                continue;
+              const std::size_t cell = std::size_t(gy) * side_x + std::size_t(gx);
+              if(refined(cell)) {
+                read_grid_near(sub[sub_of[cell]], start[cell], x, y, b, read, budget, consider);
+                continue;
+              }
+              const std::uint32_t last = (std::min)(start[cell + 1], std::uint32_t(start[cell] + (budget - read)));
+              for(std::uint32_t j = start[cell]; j < last; ++j)
+                consider(j);
+              read += last - start[cell];
+            }
+          }
+          const double reach = double(r) * shorter + margin;
+          searched = !any_cell || b <= reach * reach || read >= budget || b == 0;
+        }
+        if(bk == no_rank && m > 1) { // no other point read (not with finite coordinates): any will do
+          bk = k == 0 ? 1 : k - 1;
+          b = std::numeric_limits<double>::infinity();
+        }
+        best[k] = b;
+        nn[k] = bk;
       }
-      if(bk == no_rank && m > 1) { // no other point read (not with finite coordinates): any will do
-        bk = k == 0 ? 1 : k - 1;
-        b = std::numeric_limits<double>::infinity();
-      }
-      best[k] = b;
-      nn[k] = bk;
     }
-  }
+  });
   if(grid_out != nullptr) {
     grid.xmin = xmin;
     grid.ymin = ymin;
@@ -351,7 +359,7 @@ inline void nearest_neighbour_graph_in_frame(const double* xy, std::size_t m, st
 // than itself (for m > 1), so the graph is a functional graph whose every component has a
 // cycle, as the sampling of brio_dc_delaunay() needs.
 inline void nearest_neighbour_graph(const double* xy, std::size_t m, std::vector<std::uint32_t>& order,
-                                    std::vector<std::uint32_t>& nn)
+                                    std::vector<std::uint32_t>& nn, bool parallel = false)
 {
   if(m == 0) {
     order.clear();
@@ -367,11 +375,11 @@ inline void nearest_neighbour_graph(const double* xy, std::size_t m, std::vector
   }
   const double scale = unit_scale(box);
   if(scale >= 0x1p-64 && scale <= 0x1p64)
-    return nearest_neighbour_graph_in_frame(xy, m, order, nn, 0, nullptr);
+    return nearest_neighbour_graph_in_frame(xy, m, order, nn, 0, nullptr, parallel);
   std::vector<double> scaled(xy, xy + 2 * m);
   for(double& c : scaled)
     c *= scale;
-  nearest_neighbour_graph_in_frame(scaled.data(), m, order, nn, 0, nullptr);
+  nearest_neighbour_graph_in_frame(scaled.data(), m, order, nn, 0, nullptr, parallel);
 }
 
 } // namespace internal

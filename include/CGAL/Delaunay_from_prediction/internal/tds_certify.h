@@ -9,10 +9,13 @@
 #ifndef CGAL_DELAUNAY_FROM_PREDICTION_INTERNAL_TDS_CERTIFY_H
 #define CGAL_DELAUNAY_FROM_PREDICTION_INTERNAL_TDS_CERTIFY_H
 
+#include <CGAL/Delaunay_from_prediction/internal/concurrency.h>
 #include <CGAL/Delaunay_from_prediction/internal/flips.h>
 #include <CGAL/Delaunay_from_prediction/internal/outcome.h>
 #include <CGAL/Delaunay_from_prediction/internal/predicates.h>
 
+#include <algorithm>
+#include <atomic>
 #include <cstddef>
 #include <functional>
 #include <utility>
@@ -43,6 +46,21 @@ struct Inline_flips
   Flip_log<Triangulation>& log;
   std::size_t edges_failing = 0; // edges the pass found failing, flipped or listed
 };
+
+// The certification passes are bound by memory latency (a face, its three vertices and up to
+// three neighbours each): they prefetch the vertices and neighbours of the face 16 ahead.
+template <class Face_iterator>
+inline void prefetch_around(Face_iterator face)
+{
+#if defined(__GNUC__)
+  for(int k = 0; k < 3; ++k) {
+    __builtin_prefetch(face->vertex(k).operator->());
+    __builtin_prefetch(face->neighbor(k).operator->());
+  }
+#else
+  (void)face;
+#endif
+}
 
 // Returns Outcome::ok if every finite face of `tr` (dimension 2) is counterclockwise, after listing
 // in `non_delaunay` every interior edge that fails the perturbed in-circle test; otherwise
@@ -95,21 +113,12 @@ Outcome certify_triangulation(
     return bad_faces != nullptr && visited >= sample &&
            double(bad_faces->size()) * double(all_faces) > times * double(max_bad_faces) * double(visited);
   };
-  // The pass is bound by memory latency (a face, its three vertices and up to three
-  // neighbours each): the vertices and neighbours of the face 16 ahead are prefetched.
   auto ahead = tr.finite_faces_begin();
   for(int k = 0; k < 16 && ahead != tr.finite_faces_end(); ++k)
     ++ahead;
   for(auto f = tr.finite_faces_begin(); f != tr.finite_faces_end(); ++f) {
-    if(ahead != tr.finite_faces_end()) {
-#if defined(__GNUC__)
-      for(int k = 0; k < 3; ++k) {
-        __builtin_prefetch(ahead->vertex(k).operator->());
-        __builtin_prefetch(ahead->neighbor(k).operator->());
-      }
-#endif
-      ++ahead;
-    }
+    if(ahead != tr.finite_faces_end())
+      prefetch_around(ahead++);
     ++visited;
     const Point* p0 = &f->vertex(0)->point();
     const Point* p1 = &f->vertex(1)->point();
@@ -161,6 +170,106 @@ Outcome certify_triangulation(
     }
   }
   hull_is_convex = hull_is_convex_and_wound_once(tr);
+  return Outcome::ok;
+}
+
+// The certification pass of certify_triangulation() without the inline flips, on TBB's
+// threads when `parallel`: the face set is only read, so blocks of faces are tested
+// independently, each into lists of its own, joined in block order (the same lists whatever
+// the number of threads). Compact_container has no random access: one sequential walk notes
+// where each block of faces starts (it reads one word of each face). Blocks are a 64th of the
+// faces, at least 32 and at most 16384 faces: even small triangulations are cut into several
+// blocks, so that the tests cross block boundaries. Faces with a
+// neighbour not yet linked (a hole left by a tolerant import) skip that edge: the repair that
+// fills the hole tests it. Returns as certify_triangulation() does without `inline_flips`;
+// stops early when a block sees that the faces not ccw are past `max_bad_faces`.
+template <class Triangulation>
+Outcome certify_faces_in_blocks(
+    const Triangulation& tr, bool parallel,
+    std::vector<std::pair<typename Triangulation::Face_handle, int>>& non_delaunay,
+    std::size_t& edges_tested, std::vector<typename Triangulation::Face_handle>* bad_faces = nullptr,
+    std::size_t max_bad_faces = 0)
+{
+  using Face_handle = typename Triangulation::Face_handle;
+  using Face_iterator = typename Triangulation::Triangulation_data_structure::Face_iterator;
+  if(tr.dimension() < 2)
+    return Outcome::dimension_below_2;
+  const auto& tds = tr.tds();
+  const auto& gt = tr.geom_traits();
+  const auto infinite = tr.infinite_vertex();
+  const std::size_t block_faces = (std::min)((std::max)(tds.number_of_faces() / 64, std::size_t(32)), std::size_t(16384));
+  std::vector<Face_iterator> starts;
+  starts.reserve(tds.number_of_faces() / block_faces + 2);
+  std::size_t k = 0;
+  for(Face_iterator f = tds.faces_begin(); f != tds.faces_end(); ++f, ++k)
+    if(k % block_faces == 0)
+      starts.push_back(f);
+  const std::size_t blocks = starts.size();
+  starts.push_back(tds.faces_end());
+  struct Found
+  {
+    std::vector<std::pair<Face_handle, int>> non_delaunay;
+    std::vector<Face_handle> bad;
+    std::size_t edges_tested = 0;
+  };
+  std::vector<Found> found(blocks);
+  std::atomic<std::size_t> bad_total{0}, visited_total{0};
+  std::atomic<bool> stop{false};
+  const std::size_t all_faces = tds.number_of_faces();
+  const std::less<const void*> before;
+  for_each_block(parallel, blocks, [&](std::size_t b) {
+    if(stop.load(std::memory_order_relaxed))
+      return;
+    auto orientation = gt.orientation_2_object();
+    Found& out = found[b];
+    std::size_t visited = 0;
+    Face_iterator ahead = starts[b];
+    for(int j = 0; j < 16 && ahead != starts[b + 1]; ++j)
+      ++ahead;
+    for(Face_iterator f = starts[b]; f != starts[b + 1]; ++f) {
+      if(ahead != starts[b + 1])
+        prefetch_around(ahead++);
+      if(f->has_vertex(infinite))
+        continue;
+      ++visited;
+      const auto& p0 = f->vertex(0)->point();
+      const auto& p1 = f->vertex(1)->point();
+      const auto& p2 = f->vertex(2)->point();
+      if(orientation(p0, p1, p2) != LEFT_TURN) {
+        out.bad.push_back(f);
+        if(bad_faces == nullptr || bad_total.fetch_add(1, std::memory_order_relaxed) + 1 > max_bad_faces) {
+          stop.store(true, std::memory_order_relaxed);
+          return;
+        }
+        continue;
+      }
+      for(int i = 0; i < 3; ++i) {
+        const Face_handle g = f->neighbor(i);
+        if(g == Face_handle() || !before(&*f, &*g) || g->has_vertex(infinite))
+          continue; // each interior edge once, from its face of lower address
+        ++out.edges_tested;
+        if(!is_locally_delaunay(gt, p0, p1, p2, g->vertex(g->index(Face_handle(f)))->point()))
+          out.non_delaunay.emplace_back(f, i);
+      }
+    }
+    // Heading for 1.5 times the limit after a fair sample, as in certify_triangulation().
+    const std::size_t seen = visited_total.fetch_add(visited, std::memory_order_relaxed) + visited;
+    if(bad_faces != nullptr && seen >= 65536 &&
+       double(bad_total.load(std::memory_order_relaxed)) * double(all_faces) > 1.5 * double(max_bad_faces) * double(seen))
+      stop.store(true, std::memory_order_relaxed);
+  });
+  if(stop.load())
+    return bad_faces == nullptr ? Outcome::inverted_face : Outcome::too_many_inverted_faces;
+  std::size_t listed = 0;
+  for(const Found& out : found)
+    listed += out.non_delaunay.size();
+  non_delaunay.reserve(non_delaunay.size() + listed);
+  for(Found& out : found) {
+    non_delaunay.insert(non_delaunay.end(), out.non_delaunay.begin(), out.non_delaunay.end());
+    edges_tested += out.edges_tested;
+    if(bad_faces != nullptr)
+      bad_faces->insert(bad_faces->end(), out.bad.begin(), out.bad.end());
+  }
   return Outcome::ok;
 }
 

@@ -1,0 +1,72 @@
+// Copyright (c) 2026 Delaunay_from_prediction contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Author(s): Delaunay_from_prediction founding team
+//
+// CGAL's concurrency tags for the entry points, and the one loop that runs blocks of work on
+// TBB's threads (or in order, without TBB or with CGAL::Sequential_tag).
+
+#ifndef CGAL_DELAUNAY_FROM_PREDICTION_INTERNAL_CONCURRENCY_H
+#define CGAL_DELAUNAY_FROM_PREDICTION_INTERNAL_CONCURRENCY_H
+
+#include <CGAL/tags.h>
+
+#include <cstddef>
+#include <type_traits>
+
+#ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#endif
+
+namespace CGAL {
+namespace Delaunay_from_prediction {
+namespace internal {
+
+// Whether an entry point called with `ConcurrencyTag` runs its parallel parts on TBB's threads.
+// CGAL::Parallel_if_available_tag is CGAL::Parallel_tag when CGAL_LINKED_WITH_TBB is defined
+// and CGAL::Sequential_tag otherwise (<CGAL/tags.h>), so it needs no case of its own.
+template <class ConcurrencyTag>
+constexpr bool runs_in_parallel()
+{
+  static_assert(std::is_same<ConcurrencyTag, Sequential_tag>::value ||
+                    std::is_same<ConcurrencyTag, Parallel_tag>::value,
+                "Delaunay_from_prediction: the ConcurrencyTag must be CGAL::Sequential_tag, CGAL::Parallel_tag "
+                "or CGAL::Parallel_if_available_tag");
+#ifdef CGAL_LINKED_WITH_TBB
+  return std::is_same<ConcurrencyTag, Parallel_tag>::value;
+#else
+  static_assert(!std::is_same<ConcurrencyTag, Parallel_tag>::value,
+                "Delaunay_from_prediction: CGAL::Parallel_tag needs TBB. Link the target with "
+                "CGAL::TBB_support (find_package(TBB) and include(CGAL_TBB_support) in CMake), which "
+                "defines CGAL_LINKED_WITH_TBB, or use CGAL::Parallel_if_available_tag, which runs "
+                "sequentially without TBB.");
+  return false;
+#endif
+}
+
+// Calls body(b) for every b in [0, blocks): on TBB's threads when `parallel` (then the bodies
+// must only write what block b owns), in increasing order otherwise. The number of threads is
+// TBB's: a tbb::task_arena or tbb::global_control around the call limits it.
+template <class Body>
+void for_each_block(bool parallel, std::size_t blocks, const Body& body)
+{
+#ifdef CGAL_LINKED_WITH_TBB
+  if(parallel && blocks > 1) {
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, blocks, 1), [&](const tbb::blocked_range<std::size_t>& r) {
+      for(std::size_t b = r.begin(); b != r.end(); ++b)
+        body(b);
+    });
+    return;
+  }
+#else
+  (void)parallel;
+#endif
+  for(std::size_t b = 0; b < blocks; ++b)
+    body(b);
+}
+
+} // namespace internal
+} // namespace Delaunay_from_prediction
+} // namespace CGAL
+
+#endif // CGAL_DELAUNAY_FROM_PREDICTION_INTERNAL_CONCURRENCY_H

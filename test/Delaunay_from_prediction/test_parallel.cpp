@@ -1,0 +1,202 @@
+// Copyright (c) 2026 Delaunay_from_prediction contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Author(s): Delaunay_from_prediction contributors
+//
+// The concurrency tag on the five entry points: CGAL::Sequential_tag (the default),
+// CGAL::Parallel_if_available_tag with TBB limited to one thread and to two. Every result must
+// be CGAL's Delaunay_triangulation_2 of the same points, whatever the tag and the thread count,
+// on degenerate inputs too (grids, co-circular lattice points, collinear sets, duplicates, huge
+// and tiny coordinates). make_delaunay's parallel certification cuts a triangulation into
+// blocks of at least 32 faces, so even these small inputs cross many block boundaries; moves
+// large enough to invert many faces exercise the early stop shared between the blocks.
+
+#include <CGAL/Delaunay_from_prediction_2.h> // first: the header is self-contained
+
+#include "test_util.h"
+
+#include <CGAL/Delaunay_from_predicted_edges_2.h>
+#include <CGAL/Delaunay_from_prediction/brio_dc.h>
+#include <CGAL/Delaunay_from_prediction/spanning_graph.h>
+#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Triangulation_hierarchy_2.h>
+#include <CGAL/Triangulation_hierarchy_vertex_base_2.h>
+
+#include <cmath>
+#include <type_traits>
+
+using namespace dfp_test;
+
+// Sizes a fifth as large in unoptimized or sanitized builds (scripts/sanitize.sh), which run
+// about 20 times slower.
+inline std::size_t sized(std::size_t n) { return time_limit_scale == 1 ? n : (std::max)(n / 5, std::size_t(40)); }
+
+// CGAL's definition of CGAL::Parallel_if_available_tag, which the package relies on (it has
+// no case of its own for it).
+#ifdef CGAL_LINKED_WITH_TBB
+static_assert(std::is_same<CGAL::Parallel_if_available_tag, CGAL::Parallel_tag>::value, "");
+static_assert(DFP::internal::runs_in_parallel<CGAL::Parallel_tag>(), "");
+#else
+static_assert(std::is_same<CGAL::Parallel_if_available_tag, CGAL::Sequential_tag>::value, "");
+#endif
+static_assert(!DFP::internal::runs_in_parallel<CGAL::Sequential_tag>(), "");
+
+template <class K>
+struct Parallel_test
+{
+  using Point = typename K::Point_2;
+  using Points = std::vector<Point>;
+  CGAL::Random rng{2323};
+  // Parallel certifications stopped early for too many faces not ccw (the shared stop).
+  std::size_t parallel_stops = 0;
+
+  // Every entry point that takes points, with the current concurrency, against CGAL's DT.
+  void entry_points(const Points& points)
+  {
+    const std::size_t n = points.size();
+    const auto reference = indexed_delaunay<K>(points);
+    const Faces dt_faces = faces_by_info(reference);
+    std::vector<std::pair<std::size_t, std::size_t>> edges;
+    for(const Face& f : dt_faces)
+      for(int j = 0; j < 3; ++j)
+        edges.emplace_back(f[j], f[(j + 1) % 3]);
+    std::vector<std::pair<std::size_t, std::size_t>> path = random_path(n, rng);
+    const Faces predictions[] = {shuffled(dt_faces, rng), flipped_delaunay_faces<K>(points, n / 8 + 1, rng),
+                                 with_faces_deleted(shuffled(dt_faces, rng), dt_faces.size() / 20 + 1, rng),
+                                 random_triples(n, 2 * n, rng)};
+    const char* names[] = {"the DT, shuffled", "the DT after n/8 flips", "the DT with 5% of faces deleted",
+                           "random triples"};
+    for(int k = 0; k < 4; ++k) {
+      Scope s("delaunay_from_prediction, ", names[k]);
+      for(const Mode mode : strategy_modes) {
+        Scope m(name_of(mode));
+        DT_with_info<K> dt;
+        with_mode(mode, [&](const auto& np) {
+          return with_concurrency(
+              [&](auto tag) { return DFP::delaunay_from_prediction<decltype(tag)>(points, predictions[k], dt, np); });
+        });
+        check_is_cgal_delaunay(dt, points);
+      }
+    }
+    {
+      Scope s("delaunay_from_predicted_edges");
+      DT_with_info<K> dt;
+      with_concurrency([&](auto tag) { return DFP::delaunay_from_predicted_edges<decltype(tag)>(points, edges, dt); });
+      check_is_cgal_delaunay(dt, points);
+    }
+    {
+      Scope s("delaunay_from_spanning_graph, a random path");
+      DT_with_info<K> dt;
+      with_concurrency([&](auto tag) { return DFP::delaunay_from_spanning_graph<decltype(tag)>(points, path, dt); });
+      check_is_cgal_delaunay(dt, points);
+    }
+    {
+      Scope s("brio_dc_delaunay");
+      DT_with_info<K> dt;
+      with_concurrency([&](auto tag) { return DFP::brio_dc_delaunay<decltype(tag)>(points, dt); });
+      check_is_cgal_delaunay(dt, points);
+    }
+  }
+
+  // make_delaunay after moving every vertex by `amplitude` (up to, in each coordinate), on a
+  // DT with info, a Triangulation_2 and a hierarchy, with each strategy.
+  void moves(const Points& points, double amplitude)
+  {
+    Scope s("make_delaunay after moves of ", amplitude);
+    for(const Mode mode : strategy_modes) {
+      Scope m(name_of(mode));
+      DT_with_info<K> tr = indexed_delaunay<K>(points);
+      // Vertex k (in vertex order) gets info k and the k-th moved point (duplicate points
+      // are one vertex).
+      std::vector<Point> vertex_points;
+      for(auto v = tr.finite_vertices_begin(); v != tr.finite_vertices_end(); ++v) {
+        v->info() = vertex_points.size();
+        const Point& p = v->point();
+        if(amplitude > 0) // (CGAL::Random::get_double(a, a) does not return)
+          v->set_point(make_point<K>(CGAL::to_double(p.x()) + rng.get_double(-amplitude, amplitude),
+                                     CGAL::to_double(p.y()) + rng.get_double(-amplitude, amplitude)));
+        vertex_points.push_back(v->point());
+      }
+      try {
+        const DFP::Statistics st = with_mode(mode, [&](const auto& np) {
+          return with_concurrency([&](auto tag) { return DFP::make_delaunay<decltype(tag)>(tr, np); });
+        });
+        check_is_cgal_delaunay(tr, vertex_points);
+        if(current_concurrency() != Concurrency::sequential && reason_is(st, DFP::internal::Outcome::too_many_inverted_faces))
+          ++parallel_stops;
+      } catch(const DFP::Invalid_prediction&) {
+        // Two vertices moved onto the same point: then the triangulation is as it was.
+        DFP_CHECK(tr.tds().is_valid());
+      }
+    }
+  }
+
+  void point_set(const char* name, const XYs& xy, bool all_modes_of_make_delaunay = true)
+  {
+    Scope s(name);
+    const Points points = to_points<K>(xy);
+    for_each_concurrency([&] {
+      DFP_RUN(entry_points(points));
+      if(all_modes_of_make_delaunay) {
+        // Moves in units of the mean spacing, from none to twice it (many faces inverted).
+        double xmin = xy[0].x, xmax = xmin, ymin = xy[0].y, ymax = ymin;
+        for(const auto& p : xy) {
+          xmin = (std::min)(xmin, p.x);
+          xmax = (std::max)(xmax, p.x);
+          ymin = (std::min)(ymin, p.y);
+          ymax = (std::max)(ymax, p.y);
+        }
+        const double spacing = (std::max)(xmax - xmin, ymax - ymin) / std::sqrt(double(xy.size()));
+        for(const double amplitude : {0., 0.01 * spacing, 0.3 * spacing, 2. * spacing})
+          DFP_RUN(moves(points, amplitude));
+      }
+    });
+  }
+};
+
+// make_delaunay on a hierarchy: level 0 repaired with the tag, the levels above sampled anew.
+void hierarchy_case(CGAL::Random& rng)
+{
+  using K = CGAL::Exact_predicates_inexact_constructions_kernel;
+  using Vb = CGAL::Triangulation_hierarchy_vertex_base_2<CGAL::Triangulation_vertex_base_2<K>>;
+  using H = CGAL::Triangulation_hierarchy_2<
+      CGAL::Delaunay_triangulation_2<K, CGAL::Triangulation_data_structure_2<Vb>>>;
+  const std::vector<K::Point_2> points = to_points<K>(uniform_points(sized(3000), rng));
+  for_each_concurrency([&] {
+    H h(points.begin(), points.end());
+    std::vector<K::Point_2> moved;
+    for(auto v = h.finite_vertices_begin(); v != h.finite_vertices_end(); ++v) {
+      v->set_point(K::Point_2(v->point().x() + rng.get_double(-0.01, 0.01), v->point().y()));
+      moved.push_back(v->point());
+    }
+    with_concurrency([&](auto tag) { return DFP::make_delaunay<decltype(tag)>(h); });
+    check_is_cgal_delaunay(h, moved);
+  });
+}
+
+int main()
+{
+  CGAL::Random rng(777);
+  {
+    Scope s("Epick");
+    Parallel_test<CGAL::Exact_predicates_inexact_constructions_kernel> t;
+    t.point_set("uniform", uniform_points(sized(3000), rng));
+    t.point_set("clustered", clustered_points(sized(3000), rng));
+    t.point_set("grid (co-circular)", grid_points(time_limit_scale == 1 ? 40 : 18, time_limit_scale == 1 ? 40 : 18, rng));
+    t.point_set("lattice circles (co-circular)", lattice_circle_points(time_limit_scale == 1 ? 65 : 25, rng, time_limit_scale == 1 ? 25 : 5));
+    t.point_set("collinear", collinear_points(sized(200), rng));
+    t.point_set("uniform with 30% duplicates", with_duplicates(uniform_points(sized(1000), rng), sized(300), rng));
+    t.point_set("uniform scaled by 1e290", transformed(uniform_points(sized(1000), rng), 1e290, 0.));
+    t.point_set("uniform scaled by 1e-290", transformed(uniform_points(sized(1000), rng), 1e-290, 0.));
+    t.point_set("uniform offset by 1e15", transformed(uniform_points(sized(1000), rng), 1., 1e15));
+    DFP_CHECK(t.parallel_stops > 0);
+  }
+  {
+    Scope s("Epeck");
+    Parallel_test<CGAL::Exact_predicates_exact_constructions_kernel> t;
+    t.point_set("grid (co-circular)", grid_points(time_limit_scale == 1 ? 20 : 10, time_limit_scale == 1 ? 20 : 10, rng), false);
+    t.point_set("uniform", uniform_points(sized(1000), rng), false);
+  }
+  DFP_RUN(hierarchy_case(rng));
+  return finish("test_parallel");
+}
