@@ -242,11 +242,12 @@ Statistics make_delaunay(Triangulation& tr, const NamedParameters& np = paramete
   const bool flip_inline = !divide && !parallel;
   internal::Inline_flips<Triangulation> inline_flips{max_flips, stats.flips, touched, flips_before_carve};
   internal::Outcome why = internal::Outcome::rebuild_requested;
-  if(strategy != Strategy::rebuild && strategy != Strategy::spanning_tree && parallel) {
-    why = internal::certify_faces_in_blocks(tr, true, stack, stats.edges_tested, carve || divide ? &bad : nullptr,
-                                            max_bad);
+  if(strategy == Strategy::rebuild || strategy == Strategy::spanning_tree) {
+    // the prediction is not used
+  } else if(parallel) {
+    why = internal::certify_faces_in_blocks(tr, stack, stats.edges_tested, carve || divide ? &bad : nullptr, max_bad);
     hull_is_convex = why == internal::Outcome::ok && internal::hull_is_convex_and_wound_once(tr);
-  } else if(strategy != Strategy::rebuild && strategy != Strategy::spanning_tree) {
+  } else {
     why = internal::certify_triangulation(tr, stack, stats.edges_tested, hull_is_convex,
                                           carve || divide ? &bad : nullptr, max_bad,
                                           flip_inline ? &inline_flips : nullptr);

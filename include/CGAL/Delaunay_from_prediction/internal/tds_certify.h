@@ -174,18 +174,17 @@ Outcome certify_triangulation(
 }
 
 // The certification pass of certify_triangulation() without the inline flips, on TBB's
-// threads when `parallel`: the face set is only read, so blocks of faces are tested
-// independently, each into lists of its own, joined in block order (the same lists whatever
-// the number of threads). Compact_container has no random access: one sequential walk notes
-// where each block of faces starts (it reads one word of each face). Blocks are a 64th of the
-// faces, at least 32 and at most 16384 faces: even small triangulations are cut into several
-// blocks, so that the tests cross block boundaries. Faces with a
-// neighbour not yet linked (a hole left by a tolerant import) skip that edge: the repair that
-// fills the hole tests it. Returns as certify_triangulation() does without `inline_flips`;
-// stops early when a block sees that the faces not ccw are past `max_bad_faces`.
+// threads: the face set is only read, so blocks of faces are tested independently, each into
+// lists of its own, joined in block order (the same lists whatever the number of threads).
+// Compact_container has no random access: one sequential walk notes where each block of faces
+// starts (it reads one word of each face). Blocks are a 64th of the faces, at least 32 and at
+// most 16384 faces: even small triangulations are cut into several blocks, so that the tests
+// cross block boundaries. Returns as certify_triangulation() does without `inline_flips`
+// (`hull_is_convex` aside); stops early when a block sees that the faces not ccw are past
+// `max_bad_faces`.
 template <class Triangulation>
 Outcome certify_faces_in_blocks(
-    const Triangulation& tr, bool parallel,
+    const Triangulation& tr,
     std::vector<std::pair<typename Triangulation::Face_handle, int>>& non_delaunay,
     std::size_t& edges_tested, std::vector<typename Triangulation::Face_handle>* bad_faces = nullptr,
     std::size_t max_bad_faces = 0)
@@ -217,7 +216,7 @@ Outcome certify_faces_in_blocks(
   std::atomic<bool> stop{false};
   const std::size_t all_faces = tds.number_of_faces();
   const std::less<const void*> before;
-  for_each_block(parallel, blocks, [&](std::size_t b) {
+  for_each_block(true, blocks, [&](std::size_t b) {
     if(stop.load(std::memory_order_relaxed))
       return;
     auto orientation = gt.orientation_2_object();
@@ -245,7 +244,7 @@ Outcome certify_faces_in_blocks(
       }
       for(int i = 0; i < 3; ++i) {
         const Face_handle g = f->neighbor(i);
-        if(g == Face_handle() || !before(&*f, &*g) || g->has_vertex(infinite))
+        if(!before(&*f, &*g) || g->has_vertex(infinite))
           continue; // each interior edge once, from its face of lower address
         ++out.edges_tested;
         if(!is_locally_delaunay(gt, p0, p1, p2, g->vertex(g->index(Face_handle(f)))->point()))
