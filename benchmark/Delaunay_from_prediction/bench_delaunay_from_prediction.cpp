@@ -60,6 +60,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -91,14 +92,16 @@
 // (CGAL and this package use none on these paths; GMP is never reached with Epick on these
 // inputs). Single thread, so plain counters.
 namespace counting {
-std::size_t current_bytes = 0;
-std::size_t peak_bytes = 0;
+// Atomic: the parallel calls allocate from TBB's threads too.
+std::atomic<std::size_t> current_bytes{0};
+std::atomic<std::size_t> peak_bytes{0};
 
 inline void account(void* p)
 {
-  current_bytes += malloc_usable_size(p);
-  if(current_bytes > peak_bytes)
-    peak_bytes = current_bytes;
+  const std::size_t now = current_bytes.fetch_add(malloc_usable_size(p)) + malloc_usable_size(p);
+  std::size_t peak = peak_bytes.load();
+  while(now > peak && !peak_bytes.compare_exchange_weak(peak, now)) {
+  }
 }
 inline void* allocate(std::size_t size)
 {
@@ -130,7 +133,7 @@ inline void release(void* p) noexcept
 struct Peak_scope
 {
   std::size_t base;
-  Peak_scope() : base(current_bytes) { peak_bytes = current_bytes; }
+  Peak_scope() : base(current_bytes.load()) { peak_bytes = base; }
   std::size_t bytes() const { return peak_bytes - base; }
 };
 } // namespace counting
@@ -907,6 +910,25 @@ void run(const Options& o, const std::string& dist, std::size_t n, Report& repor
       row.failure = "ours: " + s.str() + "; CGAL: " + reference.str();
     }
     report.add(row);
+#ifdef CGAL_LINKED_WITH_TBB
+    if(parallel_threads > 0) { // the same call with CGAL::Parallel_tag in the arena
+      Row par = parallel_row(row);
+      {
+        counting::Peak_scope scope;
+        DT dt;
+        in_arena([&] {
+          par.stats = DFP::delaunay_from_prediction<CGAL::Parallel_tag>(points, shuffled_faces, dt);
+          return 0.;
+        });
+        par.our_bytes = scope.bytes();
+        s = signature(dt);
+      }
+      par.ok = s == reference;
+      if(!par.ok)
+        par.failure = "ours: " + s.str() + "; CGAL: " + reference.str();
+      report.add(par);
+    }
+#endif
   }
 
   // 7. Kinetic: make_delaunay() on CGAL's DT with point indices in info(), every vertex moved

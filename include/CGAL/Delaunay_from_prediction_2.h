@@ -108,7 +108,7 @@ template <class ConcurrencyTag = Sequential_tag, class PointRange, class FaceRan
 Statistics delaunay_from_prediction(const PointRange& points, const FaceRange& faces, DT& dt,
                                     const NamedParameters& np = parameters::default_values())
 {
-  (void)internal::runs_in_parallel<ConcurrencyTag>(); // checks the tag: sequential in this version (manual, "Parallel Mode")
+  constexpr bool parallel = internal::runs_in_parallel<ConcurrencyTag>();
   if constexpr(internal::is_triangulation_hierarchy<DT>::value) { // level 0, then the upper levels
     return internal::with_levels_rebuilt(
         dt, [&](auto& level0) { return delaunay_from_prediction<ConcurrencyTag>(points, faces, level0, np); });
@@ -144,7 +144,7 @@ Statistics delaunay_from_prediction(const PointRange& points, const FaceRange& f
     return stats;
   }
   return internal::delaunay_from_index_triples(point_at, n, faces, number_of_faces, dt, max_flips, screen, strategy,
-                                               region_size, stats);
+                                               region_size, stats, parallel);
   } // not a hierarchy
 }
 

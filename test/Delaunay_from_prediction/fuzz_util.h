@@ -85,7 +85,7 @@ struct Case
   int split_method = -1;      // Split_method value, -1: not given
   bool screen = true;         // screen_prediction
   bool t2 = false;            // make_delaunay on a plain Triangulation_2
-  bool parallel = false;      // make_delaunay with CGAL::Parallel_if_available_tag
+  bool parallel = false;      // called with CGAL::Parallel_if_available_tag (the prediction entry points, make_delaunay)
   unsigned param_seed = 0;    // random_seed for brio / split (0: not given)
   double sample_probability = -1;
   XYs pts;                    // points; make_delaunay: initial points; imprecise: centres

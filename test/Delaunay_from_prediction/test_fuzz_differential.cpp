@@ -3,8 +3,8 @@
 // Author(s): Delaunay_from_prediction contributors
 //
 // Differential fuzzer: random point families x prediction families x kernels x entry points x
-// named parameters x, for make_delaunay, the concurrency tag (Sequential_tag or
-// Parallel_if_available_tag), each result compared with CGAL's Delaunay_triangulation_2 built from
+// named parameters x, for make_delaunay and the prediction entry points, the concurrency tag
+// (Sequential_tag or Parallel_if_available_tag), each result compared with CGAL's Delaunay_triangulation_2 built from
 // scratch with the same kernel (as index triples, vertex sets and info), plus the consistency of
 // the Statistics, is_valid(), and "malformed input throws Invalid_prediction and changes
 // nothing". Seeded and budgeted; cases run in forked children so that a crash or a hang is
@@ -401,6 +401,7 @@ static Case gen_case(unsigned long long seed, long long k)
   case E_EDGES: {
     c.pred_family = pick(rng, {14, 14, 8, 6, 6, 10, 6, 6, 4, 6, 6});
     c.faces = gen_faces(c.pred_family, c.pts, rng);
+    c.parallel = rng.get_bool();
     if(c.entry == E_EDGES) {
       c.faces = edges_of(c.faces);
       for(int extra = rng.get_int(0, 4) == 0 ? rng.get_int(1, 6) : 0; extra > 0 && n >= 2; --extra) {
@@ -746,16 +747,17 @@ void run_dfp(Checker& ck, const Case& c, bool exact)
   DFP::Statistics s;
   const bool any = c.strategy >= 0 || c.max_flips >= 0 || c.region_size >= 0 || !c.screen;
   const std::size_t n = P.size();
-  expect_no_throw(ck, [&] {
+  auto call_with = [&](auto tag) {
+    using Tag = decltype(tag);
     if(c.entry == E_EDGES) {
       std::vector<std::pair<long long, long long>> e;
       for(const Tri& t : c.faces)
         e.emplace_back(t[0], t[1]);
-      s = DFP::delaunay_from_predicted_edges(P, e, tr);
+      s = DFP::delaunay_from_predicted_edges<Tag>(P, e, tr);
     } else if(!any)
-      s = DFP::delaunay_from_prediction(P, c.faces, tr);
+      s = DFP::delaunay_from_prediction<Tag>(P, c.faces, tr);
     else
-      s = DFP::delaunay_from_prediction(
+      s = DFP::delaunay_from_prediction<Tag>(
           P, c.faces, tr,
           DFP::parameters::strategy(
               c.strategy >= 0 ? DFP::Strategy(c.strategy) : DFP::Strategy::automatic,
@@ -764,6 +766,12 @@ void run_dfp(Checker& ck, const Case& c, bool exact)
                   DFP::parameters::region_size(
                       c.region_size >= 0 ? std::size_t(c.region_size) : DFP::internal::default_region_size(n),
                       DFP::parameters::screen_prediction(c.screen)))));
+  };
+  expect_no_throw(ck, [&] {
+    if(c.parallel)
+      call_with(CGAL::Parallel_if_available_tag());
+    else
+      call_with(CGAL::Sequential_tag());
   });
   if(!ck.failure.empty())
     return;

@@ -22,7 +22,12 @@
 #include <CGAL/Triangulation_hierarchy_2.h>
 #include <CGAL/Triangulation_hierarchy_vertex_base_2.h>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
+#include <map>
+#include <string>
+#include <tuple>
 #include <type_traits>
 
 using namespace dfp_test;
@@ -41,6 +46,14 @@ static_assert(std::is_same<CGAL::Parallel_if_available_tag, CGAL::Sequential_tag
 #endif
 static_assert(!DFP::internal::runs_in_parallel<CGAL::Sequential_tag>(), "");
 
+// `faces` with a copy of its first face at the end.
+Faces with_first_face_repeated(Faces faces)
+{
+  if(!faces.empty())
+    faces.push_back(faces.front());
+  return faces;
+}
+
 template <class K>
 struct Parallel_test
 {
@@ -49,6 +62,8 @@ struct Parallel_test
   CGAL::Random rng{2323};
   // Parallel certifications stopped early for too many faces not ccw (the shared stop).
   std::size_t parallel_stops = 0;
+  // The certification counts of the sequential call, by (number of points, prediction, mode).
+  std::map<std::tuple<std::size_t, int, int>, std::array<std::size_t, 4>> sequential_counts;
 
   // Every entry point that takes points, with the current concurrency, against CGAL's DT.
   void entry_points(const Points& points)
@@ -61,21 +76,36 @@ struct Parallel_test
       for(int j = 0; j < 3; ++j)
         edges.emplace_back(f[j], f[(j + 1) % 3]);
     std::vector<std::pair<std::size_t, std::size_t>> path = random_path(n, rng);
-    const Faces predictions[] = {shuffled(dt_faces, rng), flipped_delaunay_faces<K>(points, n / 8 + 1, rng),
+    // The flips are the same for every concurrency (their counts are compared below).
+    CGAL::Random flip_rng{static_cast<unsigned>(n)};
+    const Faces predictions[] = {shuffled(dt_faces, rng), flipped_delaunay_faces<K>(points, n / 8 + 1, flip_rng),
                                  with_faces_deleted(shuffled(dt_faces, rng), dt_faces.size() / 20 + 1, rng),
-                                 random_triples(n, 2 * n, rng)};
+                                 random_triples(n, 2 * n, rng), with_first_face_repeated(dt_faces)};
+    // Random triples overlap inside a chunk of the parallel import; a face repeated at the end
+    // (inputs under 4096 points keep their order) overlaps its copy across chunks, at a seam.
     const char* names[] = {"the DT, shuffled", "the DT after n/8 flips", "the DT with 5% of faces deleted",
-                           "random triples"};
-    for(int k = 0; k < 4; ++k) {
+                           "random triples", "the DT with its first face repeated last"};
+    for(int k = 0; k < 5; ++k) {
       Scope s("delaunay_from_prediction, ", names[k]);
       for(const Mode mode : strategy_modes) {
         Scope m(name_of(mode));
         DT_with_info<K> dt;
-        with_mode(mode, [&](const auto& np) {
+        const DFP::Statistics st = with_mode(mode, [&](const auto& np) {
           return with_concurrency(
               [&](auto tag) { return DFP::delaunay_from_prediction<decltype(tag)>(points, predictions[k], dt, np); });
         });
         check_is_cgal_delaunay(dt, points);
+        // The parallel import pairs and tests the same edges: for a prediction that is a
+        // triangulation, the certification's counts are the sequential call's.
+        if(k < 2) {
+          const std::array<std::size_t, 4> counts = {st.edges_tested, st.edges_not_locally_delaunay, st.points_unused,
+                                                     std::size_t(st.fell_back)};
+          auto& sequential = sequential_counts[{n, k, int(mode)}];
+          if(current_concurrency() == Concurrency::sequential)
+            sequential = counts;
+          else
+            DFP_CHECK(counts == sequential);
+        }
       }
     }
     {
@@ -174,9 +204,84 @@ void hierarchy_case(CGAL::Random& rng)
   });
 }
 
+// The reordering of the import (spatial_order.h) with and without the parallel counting sort
+// gives the same order: the parallel passes start at 65536 items, so 70,000 points and their
+// 140,000 faces take them; and the counting sort on its own, against std::stable_sort.
+void reordering_is_the_same(CGAL::Random& rng)
+{
+  using K = CGAL::Exact_predicates_inexact_constructions_kernel;
+  const std::vector<K::Point_2> points = to_points<K>(uniform_points(70000, rng));
+  std::vector<std::uint32_t> triples;
+  for(const Face& f : shuffled(faces_by_info(indexed_delaunay<K>(points)), rng))
+    for(int j = 0; j < 3; ++j)
+      triples.push_back(std::uint32_t(f[j]));
+  std::vector<std::uint32_t> in_parallel = triples;
+  DFP::internal::Spatial_order sequential_order, parallel_order;
+  sequential_order.compute(K(), points.begin(), points.size(), triples, false);
+  for_each_concurrency([&] {
+    if(current_concurrency() != Concurrency::parallel_2_threads)
+      return;
+    parallel_order.compute(K(), points.begin(), points.size(), in_parallel, true);
+  });
+  DFP_CHECK(sequential_order.renumbered() && sequential_order.faces_sorted());
+  DFP_CHECK(parallel_order.renumbered() && parallel_order.faces_sorted());
+  DFP_CHECK(in_parallel == triples);
+  bool same_numbering = true;
+  for(std::uint32_t v = 0; v < points.size(); ++v)
+    same_numbering = same_numbering && sequential_order.old_index(v) == parallel_order.old_index(v);
+  DFP_CHECK(same_numbering);
+
+  for(const std::size_t buckets : {std::size_t(1), std::size_t(7), std::size_t(5000), std::size_t(3000000)}) {
+    Scope s("counting_sort, ", buckets, " buckets");
+    std::vector<std::uint32_t> key(200000);
+    for(std::uint32_t& k : key)
+      k = std::uint32_t(rng.get_int(0, int(buckets)));
+    std::vector<std::uint32_t> expected(key.size()), sorted(key.size()), end, expected_end(buckets, 0);
+    for(std::uint32_t k = 0; k < key.size(); ++k)
+      expected[k] = k;
+    std::stable_sort(expected.begin(), expected.end(), [&](std::uint32_t a, std::uint32_t b) { return key[a] < key[b]; });
+    for(const std::uint32_t k : key) // end[b]: the number of keys up to b
+      ++expected_end[k];
+    for(std::size_t b = 1; b < buckets; ++b)
+      expected_end[b] += expected_end[b - 1];
+    for(const bool parallel : {false, true}) {
+      std::fill(sorted.begin(), sorted.end(), 0);
+      DFP::internal::counting_sort(
+          key.size(), buckets, [&](std::size_t k) { return key[k]; },
+          [&](std::size_t k, std::size_t position) { sorted[position] = std::uint32_t(k); }, parallel, end);
+      DFP_CHECK(sorted == expected);
+      DFP_CHECK(end == expected_end);
+    }
+  }
+}
+
+// A malformed face read in parallel blocks throws as in order: for the first one.
+void first_malformed_face_is_named(CGAL::Random& rng)
+{
+  using K = CGAL::Exact_predicates_inexact_constructions_kernel;
+  const std::vector<K::Point_2> points = to_points<K>(uniform_points(1000, rng));
+  Faces faces = random_triples(points.size(), 200000, rng);
+  faces[150000][1] = 5000;
+  faces[70001][2] = 1000;
+  faces[70001][0] = 1000;
+  for_each_concurrency([&] {
+    DT_with_info<K> dt;
+    try {
+      with_concurrency([&](auto tag) { return DFP::delaunay_from_prediction<decltype(tag)>(points, faces, dt); });
+      DFP_CHECK_MSG(false, "no exception");
+    } catch(const DFP::Invalid_prediction& e) {
+      const std::string what = e.what();
+      DFP_CHECK_MSG(what.find("70001") != std::string::npos && what.find("150000") == std::string::npos, what);
+    }
+    DFP_CHECK(dt.number_of_vertices() == 0);
+  });
+}
+
 int main()
 {
   CGAL::Random rng(777);
+  DFP_RUN(reordering_is_the_same(rng));
+  DFP_RUN(first_malformed_face_is_named(rng));
   {
     Scope s("Epick");
     Parallel_test<CGAL::Exact_predicates_inexact_constructions_kernel> t;

@@ -20,6 +20,7 @@
 #ifndef CGAL_DELAUNAY_FROM_PREDICTION_INTERNAL_IMPORT_PREDICTION_H
 #define CGAL_DELAUNAY_FROM_PREDICTION_INTERNAL_IMPORT_PREDICTION_H
 
+#include <CGAL/Delaunay_from_prediction/internal/concurrency.h>
 #include <CGAL/Delaunay_from_prediction/internal/hash_map.h>
 #include <CGAL/Delaunay_from_prediction/internal/hole_tracing.h>
 #include <CGAL/Delaunay_from_prediction/internal/outcome.h>
@@ -28,10 +29,12 @@
 #include <CGAL/Delaunay_from_prediction/internal/vertex_info.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <limits>
+#include <memory>
 #include <utility>
 #include <vector>
 
@@ -76,13 +79,13 @@ struct Imported_prediction
 class Open_halfedges
 {
 public:
-  explicit Open_halfedges(std::size_t n)
+  // With `banded`, the faces come in band order (sorted by smallest index): a window of
+  // 16 sqrt(n) lists, about eight rows of the reordering grid. Otherwise small inputs get one
+  // list per vertex, and larger ones the window.
+  explicit Open_halfedges(std::size_t n, bool banded = false)
   {
-    // Small inputs: one list per vertex. Otherwise a window of 16 sqrt(n), about eight rows of
-    // the reordering grid.
-    const std::size_t wanted = n <= (std::size_t(1) << 16)
-                                   ? n
-                                   : (std::min)(n, std::size_t(16 * std::sqrt(double(n))) + 1024);
+    const std::size_t window = (std::min)(n, std::size_t(16 * std::sqrt(double(n))) + 1024);
+    const std::size_t wanted = !banded && n <= (std::size_t(1) << 16) ? n : window;
     std::size_t size = 64;
     while(size < wanted)
       size <<= 1;
@@ -177,6 +180,46 @@ class Prediction_importer
   // with the half-edge's index (the vertex it faces) in bits 0-1 and, in bit 2, whether its
   // tail is the edge's smaller endpoint.
   static constexpr std::uintptr_t tail_is_smaller_bit = 4, index_bits = 3, flag_bits = 7;
+  // An open half-edge by its endpoints, with its code.
+  struct Boundary_halfedge
+  {
+    std::uint32_t tail, head;
+    std::uintptr_t code;
+    bool operator<(const Boundary_halfedge& other) const { return tail < other.tail; }
+  };
+
+  static std::uintptr_t halfedge_code(Face_handle f, int i, bool tail_is_smaller)
+  {
+    return reinterpret_cast<std::uintptr_t>(&*f) | std::uintptr_t(i) | (tail_is_smaller ? tail_is_smaller_bit : 0);
+  }
+
+  enum class Pairing { opened, twin_found, same_side };
+  // Offers half-edge i of f, from `tail` to `head`, to `open`: either it opens, or the
+  // half-edge waiting on the same edge is taken (`twin`), on the other side of the edge or,
+  // for faces that overlap, on the same side.
+  static Pairing offer_halfedge(Open_halfedges& open, Face_handle f, int i, std::uint32_t tail, std::uint32_t head,
+                                std::uintptr_t& twin)
+  {
+    const bool tail_is_smaller = tail < head;
+    const std::uintptr_t code = halfedge_code(f, i, tail_is_smaller);
+    if(!open.take_or_open(tail_is_smaller ? tail : head, tail_is_smaller ? head : tail, code, twin))
+      return Pairing::opened;
+    return ((twin ^ code) & tail_is_smaller_bit) == 0 ? Pairing::same_side : Pairing::twin_found;
+  }
+
+  // Links half-edge i of f to its twin, half-edge j of g, and records the edge in `failing`
+  // (as (f, i)) unless it is locally Delaunay: `opposite` is f's vertex i, `tail` and `head`
+  // the edge's ends.
+  static void link_and_test(const typename Triangulation::Geom_traits& gt, Face_handle f, int i, Face_handle g, int j,
+                            const Point& opposite, const Point& tail, const Point& head, std::size_t& edges_tested,
+                            std::vector<std::pair<Face_handle, int>>& failing)
+  {
+    f->set_neighbor(i, g);
+    g->set_neighbor(j, f);
+    ++edges_tested;
+    if(!is_locally_delaunay(gt, opposite, tail, head, g->vertex(j)->point()))
+      failing.emplace_back(f, i);
+  }
 
 public:
   // Imports and certifies the prediction `triples` (validated 32-bit index triples of
@@ -200,23 +243,31 @@ public:
   // With `tolerant`, a face that is degenerate or lies on the same side of an edge as an
   // earlier face is left out instead of failing the import, and a boundary that is not one
   // convex polygon is handed over (needs_repair, open_halfedges) for carve_repair.h.
+  //
+  // With `parallel`, the faces are oriented, paired and tested in chunks on TBB's threads
+  // (build_in_chunks()); the certificate is the same.
   template <class PointIterator>
   static void run(Triangulation& tr, PointIterator points, std::size_t n, std::vector<std::uint32_t>& triples,
-                  Imported_prediction<Triangulation>& out, bool tolerant)
+                  Imported_prediction<Triangulation>& out, bool tolerant, bool parallel = false)
   {
     Prediction_importer importer(tr, n, triples.size() / 3, out, tolerant);
     Spatial_order order;
-    order.compute(tr.geom_traits(), points, n, triples);
+    order.compute(tr.geom_traits(), points, n, triples, parallel);
     out.reordered = order.renumbered() || order.faces_sorted();
+    auto import = [&](auto sorted_points) {
+      if(!parallel || importer.number_of_faces_ < 2 * min_chunk || !importer.build_in_chunks(sorted_points, triples, order))
+        importer.build(sorted_points, triples, order);
+    };
     if(order.renumbered()) {
-      std::vector<Point> sorted_points;
-      sorted_points.reserve(n);
-      for(std::uint32_t v = 0; v < n; ++v)
-        sorted_points.push_back(points[order.old_index(v)]);
-      importer.build(sorted_points.begin(), triples, order);
+      std::vector<Point> sorted_points(n);
+      for_each_block(parallel, (n + 65535) / 65536, [&](std::size_t b) {
+        for(std::size_t v = 65536 * b, end = (std::min)(n, v + 65536); v < end; ++v)
+          sorted_points[v] = points[order.old_index(std::uint32_t(v))];
+      });
+      import(sorted_points.cbegin());
       out.points_in_grid_order = order.take_old_indices();
     } else {
-      importer.build(points, triples, order);
+      import(points);
     }
   }
 
@@ -307,20 +358,18 @@ private:
       const std::size_t tests_before = out_.not_locally_delaunay.size();
       for(int i = 0; i < 3; ++i) {
         const std::uint32_t tail = v[ccw(i)], head = v[cw(i)];
-        const bool tail_is_smaller = tail < head;
-        const std::uintptr_t code = reinterpret_cast<std::uintptr_t>(&*f) | std::uintptr_t(i) |
-                                    (tail_is_smaller ? tail_is_smaller_bit : 0);
         std::uintptr_t twin = 0;
-        if(!open.take_or_open(tail_is_smaller ? tail : head, tail_is_smaller ? head : tail, code, twin))
+        const Pairing pairing = offer_halfedge(open, f, i, tail, head, twin);
+        if(pairing == Pairing::opened)
           continue;
-        if(((twin ^ code) & tail_is_smaller_bit) == 0) {
+        if(pairing == Pairing::same_side) {
           if(!tolerant_) {
             out_.failure = Outcome::overlapping_faces;
             return;
           }
           // Leave this face out: reopen the twin just taken, undo the half-edges done.
           std::uintptr_t ignored = 0;
-          open.take_or_open(tail_is_smaller ? tail : head, tail_is_smaller ? head : tail, twin, ignored);
+          open.take_or_open((std::min)(tail, head), (std::max)(tail, head), twin, ignored);
           drop_face(f, v, i, created, w, open, tests_before);
           f_dropped = true;
           if(out_.faces_dropped > max_dropped()) {
@@ -329,13 +378,9 @@ private:
           }
           break;
         }
-        const Face_handle g = tds.faces().iterator_to(*reinterpret_cast<Face*>(twin & ~flag_bits));
-        const int j = int(twin & index_bits);
-        f->set_neighbor(i, g);
-        g->set_neighbor(j, f);
-        ++out_.edges_tested;
-        if(!is_locally_delaunay(gt, points[v[i]], points[tail], points[head], g->vertex(j)->point()))
-          out_.not_locally_delaunay.emplace_back(f, i);
+        link_and_test(gt, f, i, tds.faces().iterator_to(*reinterpret_cast<Face*>(twin & ~flag_bits)),
+                      int(twin & index_bits), points[v[i]], points[tail], points[head], out_.edges_tested,
+                      out_.not_locally_delaunay);
       }
       if(f_dropped) {
         f_dropped = false;
@@ -345,17 +390,32 @@ private:
       }
     }
 
+    std::vector<Boundary_halfedge> boundary;
+    boundary.reserve(open.size());
+    open.for_each([&](std::uint32_t smaller, std::uint32_t larger, std::uintptr_t code) {
+      boundary.push_back(boundary_halfedge(smaller, larger, code));
+    });
+    finish(points, vertex_of, order, boundary);
+  }
+
+  static Boundary_halfedge boundary_halfedge(std::uint32_t smaller, std::uint32_t larger, std::uintptr_t code)
+  {
+    return (code & tail_is_smaller_bit) ? Boundary_halfedge{smaller, larger, code}
+                                        : Boundary_halfedge{larger, smaller, code};
+  }
+
+  // After the faces are imported and paired: the points no face uses, then the half-edges
+  // still open (`boundary`: the hull's and the boundaries of holes), the small holes filled
+  // (tolerant import) and the hull closed, or the boundary handed over for carve_repair.h.
+  template <class PointIterator>
+  void finish(PointIterator points, const std::vector<Vertex_handle>& vertex_of, const Spatial_order& order,
+              std::vector<Boundary_halfedge>& boundary)
+  {
+    auto& tds = tr_.tds();
     for(std::uint32_t v = 0; v < n_; ++v)
       if(vertex_of[v] == Vertex_handle())
         out_.unused_points.push_back(order.old_index(v));
     std::sort(out_.unused_points.begin(), out_.unused_points.end());
-    // The half-edges still open, sorted by tail: the hull's, and the boundaries of holes.
-    std::vector<Boundary_halfedge> boundary;
-    boundary.reserve(open.size());
-    open.for_each([&](std::uint32_t smaller, std::uint32_t larger, std::uintptr_t code) {
-      boundary.push_back((code & tail_is_smaller_bit) ? Boundary_halfedge{smaller, larger, code}
-                                                      : Boundary_halfedge{larger, smaller, code});
-    });
     std::sort(boundary.begin(), boundary.end());
     if(tolerant_ && out_.faces_dropped == 0)
       fill_small_holes(points, boundary);
@@ -379,6 +439,205 @@ private:
                                        int(h.code & index_bits));
   }
 
+  // Faces per chunk of build_in_chunks(), at least: small, so that even small inputs (and the
+  // tests) cross several chunk boundaries.
+  static constexpr std::size_t min_chunk = 32;
+
+  // build() in parallel, on chunks of consecutive faces (a 16th of them, at least
+  // min_chunk). Three passes over the chunks on TBB's threads:
+  //  1. each vertex is given to the first chunk that uses it;
+  //  2. each chunk creates its vertices, in the order of the faces, in a Compact_container of
+  //     its own (CGAL's containers are not thread-safe);
+  //  3. each chunk orients its faces and creates them in a container of its own, pairs their
+  //     half-edges through its own Open_halfedges, links and tests the pairs; it writes only
+  //     its own faces and vertices.
+  // Then the containers are spliced, in chunk order, into the triangulation's
+  // (Compact_container::merge(), constant time per block), so that vertices and faces come
+  // in the order build() creates them, and the half-edges each chunk left open (its
+  // frontiers with the chunks before and after, about sqrt(n) each for faces in band order,
+  // and the hull) are paired sequentially in chunk order. The pairing is exact, so the faces,
+  // their links and the failing edges are those of build(); only the order of the failing
+  // edges differs.
+  //
+  // A face the tolerant import would leave out (flat, or on the same side of an edge as
+  // another) stops every chunk and false is returned, the triangulation untouched: build()
+  // then runs from the start, since which face it leaves out depends on the order of the
+  // faces. Strict imports fail there as build() does.
+  template <class PointIterator>
+  bool build_in_chunks(PointIterator points, const std::vector<std::uint32_t>& triples, const Spatial_order& order)
+  {
+    using Vertex_range = typename Triangulation::Triangulation_data_structure::Vertex_range;
+    using Face_range = typename Triangulation::Triangulation_data_structure::Face_range;
+    auto& tds = tr_.tds();
+    const auto& gt = tr_.geom_traits();
+    const std::size_t faces = number_of_faces_;
+    const std::size_t chunk_size = (std::max)(min_chunk, (faces + 15) / 16);
+    const std::size_t chunks = (faces + chunk_size - 1) / chunk_size;
+    auto for_each_chunk = [&](const auto& body) {
+      for_each_block(true, chunks, [&](std::size_t c) {
+        body(c, c * chunk_size, (std::min)(faces, (c + 1) * chunk_size));
+      });
+    };
+
+    // 1. The first chunk to use each vertex.
+    constexpr std::uint32_t nobody = (std::numeric_limits<std::uint32_t>::max)(), has_face = nobody - 1;
+    std::unique_ptr<std::atomic<std::uint32_t>[]> owner(new std::atomic<std::uint32_t>[n_]);
+    for_each_block(true, (n_ + 65535) / 65536, [&](std::size_t b) {
+      for(std::size_t v = 65536 * b, end = (std::min)(n_, v + 65536); v < end; ++v)
+        owner[v].store(nobody, std::memory_order_relaxed);
+    });
+    for_each_chunk([&](std::size_t c, std::size_t first, std::size_t last) {
+      for(const std::uint32_t *t = triples.data() + 3 * first, *end = triples.data() + 3 * last; t != end; ++t) {
+        std::uint32_t seen = owner[*t].load(std::memory_order_relaxed);
+        while(c < seen && !owner[*t].compare_exchange_weak(seen, std::uint32_t(c), std::memory_order_relaxed)) {
+        }
+      }
+    });
+
+    // 2. The vertices.
+    std::vector<Vertex_handle> vertex_of(n_);
+    std::vector<Vertex_range> vertices(chunks);
+    for_each_chunk([&](std::size_t c, std::size_t first, std::size_t last) {
+      for(const std::uint32_t *t = triples.data() + 3 * first, *end = triples.data() + 3 * last; t != end; ++t)
+        if(owner[*t].load(std::memory_order_relaxed) == c && vertex_of[*t] == Vertex_handle()) {
+          const Vertex_handle v = vertices[c].emplace();
+          v->set_point(points[*t]);
+          set_index_info(v, order.old_index(*t));
+          vertex_of[*t] = v;
+        }
+    });
+
+    // 3. The faces, their pairs and tests.
+    constexpr int go_on = -1, face_left_out = -2; // why the chunks stop: not, or an Outcome
+    std::atomic<int> stop{go_on};
+    struct Chunk
+    {
+      std::vector<std::pair<Face_handle, int>> not_locally_delaunay;
+      std::vector<Boundary_halfedge> open; // tail = smaller endpoint, head = larger
+      std::size_t edges_tested = 0;
+    };
+    std::vector<Chunk> chunk(chunks);
+    std::vector<Face_range> face_range(chunks);
+    const std::size_t root = std::size_t(std::sqrt(double(n_)));
+    const std::size_t max_open = n_ / 4 + 64 + 32 * root;
+    for_each_chunk([&](std::size_t c, std::size_t first, std::size_t last) {
+      Chunk& out = chunk[c];
+      Face_range& created = face_range[c];
+      created.reserve(last - first);
+      Open_halfedges open(n_, true);
+      auto orientation = gt.orientation_2_object();
+      for(std::size_t k = first; k < last; ++k) {
+        const std::size_t done = k - first;
+        if((done & 1023) == 0 && stop.load(std::memory_order_relaxed) != go_on)
+          return;
+        // The tolerant import's stop for too many holes (see build()), on this chunk's share
+        // of the faces; a chunk has two frontiers.
+        if(tolerant_ && order.faces_sorted() && (done & 4095) == 0 &&
+           (open.size() > (n_ / 4 + 64) * (last - first) / faces + 64 * root ||
+            (32 * done >= last - first && open.size() > 16 * root &&
+             double(open.size() - 16 * root) * double(faces) > 1.25 * double(max_open) * double(done)))) {
+          stop.store(int(Outcome::too_many_holes));
+          return;
+        }
+        const std::uint32_t* t = triples.data() + 3 * k;
+        std::uint32_t v[3] = {t[0], t[1], t[2]};
+        const Orientation o = orientation(points[v[0]], points[v[1]], points[v[2]]);
+        if(o == COLLINEAR) {
+          stop.store(tolerant_ ? face_left_out : int(Outcome::degenerate_face));
+          return;
+        }
+        if(o == NEGATIVE)
+          std::swap(v[1], v[2]);
+        const Face_handle f = created.emplace(vertex_of[v[0]], vertex_of[v[1]], vertex_of[v[2]]);
+        // A vertex's first face in its chunk becomes its face(); `owner` then says so (no
+        // other chunk reads that value: each compares it with its own number).
+        for(int i = 0; i < 3; ++i)
+          if(owner[v[i]].load(std::memory_order_relaxed) == c) {
+            vertex_of[v[i]]->set_face(f);
+            owner[v[i]].store(has_face, std::memory_order_relaxed);
+          }
+        for(int i = 0; i < 3; ++i) {
+          const std::uint32_t tail = v[ccw(i)], head = v[cw(i)];
+          std::uintptr_t twin = 0;
+          const Pairing pairing = offer_halfedge(open, f, i, tail, head, twin);
+          if(pairing == Pairing::opened)
+            continue;
+          if(pairing == Pairing::same_side) {
+            stop.store(tolerant_ ? face_left_out : int(Outcome::overlapping_faces));
+            return;
+          }
+          link_and_test(gt, f, i, created.iterator_to(*reinterpret_cast<Face*>(twin & ~flag_bits)),
+                        int(twin & index_bits), points[v[i]], points[tail], points[head], out.edges_tested,
+                        out.not_locally_delaunay);
+        }
+      }
+      out.open.reserve(open.size());
+      open.for_each([&](std::uint32_t smaller, std::uint32_t larger, std::uintptr_t code) {
+        out.open.push_back(Boundary_halfedge{smaller, larger, code});
+      });
+    });
+    int why = stop.load();
+    if(why == face_left_out)
+      return false; // the chunks' containers are released: build() starts again
+    if(why != go_on) {
+      out_.failure = Outcome(why);
+      return true;
+    }
+
+    // The containers spliced, then the seams paired in chunk order.
+    tds.faces().clear(); // the constructor's face of dimension -1
+    tds.set_dimension(2);
+    for(std::size_t c = 0; c < chunks; ++c) {
+      out_.vertices_used += vertices[c].size();
+      tds.vertices().merge(vertices[c]);
+      tds.faces().merge(face_range[c]);
+    }
+    std::size_t seams = 0;
+    for(const Chunk& c : chunk)
+      seams += c.open.size();
+    Hash_map<std::uint64_t, std::uintptr_t> waiting(2 * seams + 2);
+    for(std::size_t c = 0; c < chunks; ++c) {
+      out_.edges_tested += chunk[c].edges_tested;
+      out_.not_locally_delaunay.insert(out_.not_locally_delaunay.end(), chunk[c].not_locally_delaunay.begin(),
+                                       chunk[c].not_locally_delaunay.end());
+      for(const Boundary_halfedge& h : chunk[c].open) {
+        const std::uint64_t edge = std::uint64_t(h.tail) << 32 | h.head;
+        std::uintptr_t twin = 0;
+        if(!waiting.take(edge, twin)) {
+          waiting.insert(edge, h.code);
+          continue;
+        }
+        if(((twin ^ h.code) & tail_is_smaller_bit) == 0) {
+          if(!tolerant_) {
+            out_.failure = Outcome::overlapping_faces;
+            return true;
+          }
+          // Undone: build() starts again.
+          tds.faces().clear();
+          for(const Vertex_handle v : vertex_of)
+            if(v != Vertex_handle())
+              tds.delete_vertex(v);
+          out_.vertices_used = 0;
+          out_.edges_tested = 0;
+          out_.not_locally_delaunay.clear();
+          return false;
+        }
+        const Face_handle f = tds.faces().iterator_to(*reinterpret_cast<Face*>(h.code & ~flag_bits));
+        const int i = int(h.code & index_bits);
+        link_and_test(gt, f, i, tds.faces().iterator_to(*reinterpret_cast<Face*>(twin & ~flag_bits)),
+                      int(twin & index_bits), f->vertex(i)->point(), f->vertex(ccw(i))->point(),
+                      f->vertex(cw(i))->point(), out_.edges_tested, out_.not_locally_delaunay);
+      }
+    }
+    std::vector<Boundary_halfedge> boundary;
+    boundary.reserve(waiting.size());
+    waiting.for_each([&](std::uint64_t edge, std::uintptr_t code) {
+      boundary.push_back(boundary_halfedge(std::uint32_t(edge >> 32), std::uint32_t(edge), code));
+    });
+    finish(points, vertex_of, order, boundary);
+    return true;
+  }
+
   // Leaves face f (vertices v, vertex handles w, `created` those it created) out of the
   // import after its half-edge `conflict` met a twin on the same side: its half-edges before
   // `conflict` are unlinked (their twins reopened) or closed, the in-circle results on them
@@ -400,8 +659,7 @@ private:
       g->set_neighbor(j, Face_handle());
       --out_.edges_tested;
       // g's half-edge j runs from head to tail.
-      const std::uintptr_t code = reinterpret_cast<std::uintptr_t>(&*g) | std::uintptr_t(j) |
-                                  (head < tail ? tail_is_smaller_bit : 0);
+      const std::uintptr_t code = halfedge_code(g, j, head < tail);
       open.take_or_open(smaller, larger, code, twin);
     }
     out_.not_locally_delaunay.resize(tests_before);
@@ -413,13 +671,6 @@ private:
     tds.delete_face(f);
     ++out_.faces_dropped;
   }
-
-  struct Boundary_halfedge
-  {
-    std::uint32_t tail, head;
-    std::uintptr_t code;
-    bool operator<(const Boundary_halfedge& other) const { return tail < other.tail; }
-  };
 
   // Tolerant import, when no face was left out: fills the small holes here instead of handing
   // them to carve_repair.h, whose store of open half-edges (hash tables of half-edges and
@@ -475,11 +726,8 @@ private:
     };
     // Links half-edge i of f (from `tail` to `head`) to half-edge j of g, with the in-circle test.
     auto link = [&](Face_handle f, int i, std::uint32_t tail, std::uint32_t head, Face_handle g, int j) {
-      f->set_neighbor(i, g);
-      g->set_neighbor(j, f);
-      ++out_.edges_tested;
-      if(!is_locally_delaunay(gt, f->vertex(i)->point(), points[tail], points[head], g->vertex(j)->point()))
-        out_.not_locally_delaunay.emplace_back(f, i);
+      link_and_test(gt, f, i, g, j, f->vertex(i)->point(), points[tail], points[head], out_.edges_tested,
+                    out_.not_locally_delaunay);
     };
     struct Diagonal
     {

@@ -10,11 +10,15 @@
 #define CGAL_DELAUNAY_FROM_PREDICTION_INTERNAL_INPUT_CHECK_H
 
 #include <CGAL/Delaunay_from_prediction/Statistics.h>
+#include <CGAL/Delaunay_from_prediction/internal/concurrency.h>
 #include <CGAL/Delaunay_from_prediction/internal/predicates.h>
 #include <CGAL/number_utils.h>
 
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
+#include <exception>
+#include <iterator>
 #include <sstream>
 #include <tuple>
 #include <type_traits>
@@ -79,12 +83,41 @@ void read_face(const Face& face, std::size_t k, std::size_t n, std::size_t out[3
 // Reads and validates every face (read_face()) into `triples`, three 32-bit indices a face.
 // Returns false, with `triples` empty after the faces are validated, when the indices do not
 // fit in 32 bits (a CGAL triangulation of that many points needs hundreds of GB anyway).
+// With `parallel` and a random-access range, in blocks on TBB's threads; a malformed face
+// throws as in order: the first one, from the first block that has one.
 template <class FaceRange>
 bool read_index_triples(const FaceRange& faces, std::size_t n, std::size_t number_of_faces,
-                        std::vector<std::uint32_t>& triples)
+                        std::vector<std::uint32_t>& triples, bool parallel = false)
 {
   const bool fits = n < std::size_t(std::uint32_t(-1)) && number_of_faces < (std::size_t(1) << 31);
   triples.assign(fits ? 3 * number_of_faces : 0, 0);
+  using Iterator = decltype(std::begin(faces));
+  if constexpr(std::is_base_of<std::random_access_iterator_tag,
+                               typename std::iterator_traits<Iterator>::iterator_category>::value) {
+    constexpr std::size_t block = 1 << 16;
+    const std::size_t blocks = (number_of_faces + block - 1) / block;
+    if(parallel && blocks > 1) {
+      std::vector<std::exception_ptr> failure(blocks);
+      for_each_block(true, blocks, [&](std::size_t b) {
+        try {
+          std::size_t idx[3];
+          const Iterator first = std::begin(faces);
+          for(std::size_t k = b * block, end = (std::min)(number_of_faces, k + block); k < end; ++k) {
+            read_face(first[std::ptrdiff_t(k)], k, n, idx);
+            if(fits)
+              for(int j = 0; j < 3; ++j)
+                triples[3 * k + std::size_t(j)] = std::uint32_t(idx[j]);
+          }
+        } catch(...) {
+          failure[b] = std::current_exception();
+        }
+      });
+      for(const std::exception_ptr& e : failure)
+        if(e)
+          std::rethrow_exception(e);
+      return fits;
+    }
+  }
   std::uint32_t* out = triples.data();
   std::size_t k = 0, idx[3];
   for(const auto& face : faces) {

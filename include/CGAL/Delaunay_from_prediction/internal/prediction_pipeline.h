@@ -41,7 +41,8 @@ namespace internal {
 template <class PointIterator, class FaceRange, class DT>
 Statistics delaunay_from_index_triples(PointIterator point_at, std::size_t n, const FaceRange& faces,
                                        std::size_t number_of_faces, DT& dt, std::size_t max_flips, bool screen,
-                                       Strategy strategy, std::size_t region_size, Statistics stats)
+                                       Strategy strategy, std::size_t region_size, Statistics stats,
+                                       bool parallel = false)
 {
   using Vertex_handle = typename DT::Vertex_handle;
   using Face_handle = typename DT::Face_handle;
@@ -52,7 +53,7 @@ Statistics delaunay_from_index_triples(PointIterator point_at, std::size_t n, co
   internal::Imported_prediction<DT> imported;
   // Stage 1: every face validated once, into 32-bit triples (a malformed face throws here).
   std::vector<std::uint32_t> triples;
-  const bool fits = internal::read_index_triples(faces, n, number_of_faces, triples);
+  const bool fits = internal::read_index_triples(faces, n, number_of_faces, triples, parallel);
   // Stage 2: the screens, then the import. Faces missing, told by counting (see
   // missing_faces_exceed()): past n/8 the local repair would not pay; without it, past n/64
   // the faces cannot be a triangulation (any excess shows that, the margin keeps the count off
@@ -68,7 +69,7 @@ Statistics delaunay_from_index_triples(PointIterator point_at, std::size_t n, co
   else if(internal::missing_faces_exceed(gt, point_at, n, triples, carve ? n / 8 + 16 : n / 64 + 16))
     imported.failure = carve ? Outcome::too_many_holes : Outcome::holes_or_not_a_triangulation;
   else
-    internal::Prediction_importer<DT>::run(result, point_at, n, triples, imported, carve);
+    internal::Prediction_importer<DT>::run(result, point_at, n, triples, imported, carve, parallel);
 
   // The global fallback, a build from scratch: in spatial order, or, with
   // Strategy::spanning_tree, along a spanning tree of the faces' edges (Corollaries 3.4 and

@@ -13,12 +13,14 @@
 #ifndef CGAL_DELAUNAY_FROM_PREDICTION_INTERNAL_SPATIAL_ORDER_H
 #define CGAL_DELAUNAY_FROM_PREDICTION_INTERNAL_SPATIAL_ORDER_H
 
+#include <CGAL/Delaunay_from_prediction/internal/concurrency.h>
 #include <CGAL/Delaunay_from_prediction/internal/grid.h>
 #include <CGAL/Delaunay_from_prediction/internal/random.h>
 
 #include <CGAL/number_utils.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -51,6 +53,76 @@ constexpr std::uint64_t brio_seed = 0x5eed5eed5eedull;
 // resolve densities varying by 4^6 times the points per cell.
 constexpr int max_grid_depth = 6;
 
+// Stable counting sort of the items 0..m-1 by key_at(k) < buckets: calls place(k, position)
+// once for each item, positions in key order and, among equal keys, in item order, and sets
+// end[b] to the position after the last item of bucket b. With `parallel` (and m large enough
+// to pay), on TBB's threads in three passes with the same positions: blocks of items count
+// their keys' coarse buckets (the high bits) and scatter their items into them, then each
+// coarse bucket is counting-sorted by the low bits; every pass writes only what its block or
+// bucket owns. key_at and place are then called from several threads.
+template <class KeyAt, class Place>
+void counting_sort(std::size_t m, std::size_t buckets, const KeyAt& key_at, const Place& place, bool parallel,
+                   std::vector<std::uint32_t>& end)
+{
+  std::vector<std::uint32_t> key(m);
+  end.assign(buckets, 0);
+  if(!parallel || m < (std::size_t(1) << 16)) {
+    std::vector<std::uint32_t> start(buckets + 1, 0);
+    for(std::size_t k = 0; k < m; ++k) {
+      key[k] = std::uint32_t(key_at(k));
+      ++start[key[k] + 1];
+    }
+    for(std::size_t b = 1; b <= buckets; ++b)
+      start[b] += start[b - 1];
+    for(std::size_t k = 0; k < m; ++k)
+      place(k, std::size_t(start[key[k]]++));
+    std::copy(start.begin(), start.end() - 1, end.begin());
+    return;
+  }
+  int shift = 0; // coarse bucket = key >> shift, at most 1024 of them
+  while(((buckets - 1) >> shift) >= 1024)
+    ++shift;
+  const std::size_t coarse = ((buckets - 1) >> shift) + 1, fine = std::size_t(1) << shift;
+  const std::size_t block = 1 << 16, blocks = (m + block - 1) / block;
+  std::vector<std::uint32_t> offset(blocks * coarse, 0), coarse_start(coarse + 1, 0), in_coarse_order(m);
+  for_each_block(true, blocks, [&](std::size_t b) {
+    std::uint32_t* count = offset.data() + b * coarse;
+    for(std::size_t k = b * block, last = (std::min)(m, k + block); k < last; ++k) {
+      key[k] = std::uint32_t(key_at(k));
+      ++count[key[k] >> shift];
+    }
+  });
+  std::uint32_t sum = 0; // offsets in (coarse bucket, block) order
+  for(std::size_t c = 0; c < coarse; ++c) {
+    coarse_start[c] = sum;
+    for(std::size_t b = 0; b < blocks; ++b) {
+      const std::uint32_t count = offset[b * coarse + c];
+      offset[b * coarse + c] = sum;
+      sum += count;
+    }
+  }
+  coarse_start[coarse] = sum;
+  for_each_block(true, blocks, [&](std::size_t b) {
+    std::uint32_t* next = offset.data() + b * coarse;
+    for(std::size_t k = b * block, last = (std::min)(m, k + block); k < last; ++k)
+      in_coarse_order[next[key[k] >> shift]++] = std::uint32_t(k);
+  });
+  for_each_block(true, coarse, [&](std::size_t c) {
+    const std::size_t first_key = c << shift, keys = (std::min)(fine, buckets - first_key);
+    std::vector<std::uint32_t> next(keys + 1, 0);
+    for(std::uint32_t i = coarse_start[c]; i < coarse_start[c + 1]; ++i)
+      ++next[key[in_coarse_order[i]] - first_key + 1];
+    next[0] = coarse_start[c];
+    for(std::size_t j = 1; j <= keys; ++j)
+      next[j] += next[j - 1];
+    for(std::uint32_t i = coarse_start[c]; i < coarse_start[c + 1]; ++i) {
+      const std::uint32_t k = in_coarse_order[i];
+      place(std::size_t(k), std::size_t(next[key[k] - first_key]++));
+    }
+    std::copy(next.begin(), next.begin() + std::ptrdiff_t(keys), end.begin() + std::ptrdiff_t(first_key));
+  });
+}
+
 // Writes to `out` the indices in [first, last) sorted along a serpentine grid over the
 // bounding box of their points, about four points a cell, rows alternately left to right and
 // right to left, so that consecutive indices name nearby points; then sorts each crowded cell
@@ -59,19 +131,37 @@ constexpr int max_grid_depth = 6;
 // (x = u^4, y = v^4) took 1.6 times CGAL's time without, 0.8 times with. With
 // `biased_rounds` (depth 0 only), the points are first dealt into rounds (round r with
 // probability 7/8^(r+1), fixed seed), listed from the sparsest, each round in grid order.
+//
+// With `parallel` (no biased rounds: their random draws are sequential), the bounding box and
+// the sort run on TBB's threads (counting_sort()), with the same order.
 template <class Index, class PointAt>
 void sort_serpentine(const Index* first, const Index* last, Index* out, PointAt point_at, bool biased_rounds,
-                     int depth)
+                     int depth, bool parallel = false)
 {
   const std::size_t m = std::size_t(last - first);
-  double xmin = CGAL::to_double(point_at(*first).x()), xmax = xmin;
-  double ymin = CGAL::to_double(point_at(*first).y()), ymax = ymin;
-  for(const Index* i = first; i != last; ++i) {
-    const double x = CGAL::to_double(point_at(*i).x()), y = CGAL::to_double(point_at(*i).y());
-    xmin = (std::min)(xmin, x);
-    xmax = (std::max)(xmax, x);
-    ymin = (std::min)(ymin, y);
-    ymax = (std::max)(ymax, y);
+  parallel = parallel && !biased_rounds;
+  const std::size_t block = 1 << 16, blocks = (m + block - 1) / block;
+  std::vector<std::array<double, 4>> box(blocks); // xmin, xmax, ymin, ymax of each block
+  for_each_block(parallel, blocks, [&](std::size_t b) {
+    const Index* i = first + b * block;
+    const Index* end = first + (std::min)(m, (b + 1) * block);
+    double xmin = CGAL::to_double(point_at(*i).x()), xmax = xmin;
+    double ymin = CGAL::to_double(point_at(*i).y()), ymax = ymin;
+    for(; i != end; ++i) {
+      const double x = CGAL::to_double(point_at(*i).x()), y = CGAL::to_double(point_at(*i).y());
+      xmin = (std::min)(xmin, x);
+      xmax = (std::max)(xmax, x);
+      ymin = (std::min)(ymin, y);
+      ymax = (std::max)(ymax, y);
+    }
+    box[b] = {xmin, xmax, ymin, ymax};
+  });
+  double xmin = box[0][0], xmax = box[0][1], ymin = box[0][2], ymax = box[0][3];
+  for(const auto& b : box) {
+    xmin = (std::min)(xmin, b[0]);
+    xmax = (std::max)(xmax, b[1]);
+    ymin = (std::min)(ymin, b[2]);
+    ymax = (std::max)(ymax, b[3]);
   }
   const std::size_t fit = std::size_t(std::sqrt(double(m) / 4));
   const std::size_t side = depth == 0 ? (std::min)(std::size_t(1) << 12, (std::max)(std::size_t(1), fit))
@@ -79,26 +169,24 @@ void sort_serpentine(const Index* first, const Index* last, Index* out, PointAt 
   const std::size_t cells = side * side;
   const Grid_axis column(xmin, xmax, side), row(ymin, ymax, side);
   Splitmix64 random{brio_seed};
-  std::vector<std::uint32_t> key(m), start((biased_rounds ? brio_rounds : 1) * cells + 1, 0);
-  for(std::size_t k = 0; k < m; ++k) {
-    const auto& p = point_at(first[k]);
-    const std::size_t cx = column(CGAL::to_double(p.x())), cy = row(CGAL::to_double(p.y()));
-    std::uint32_t cell = std::uint32_t(cy * side + ((cy & 1) ? side - 1 - cx : cx));
-    if(biased_rounds)
-      cell += std::uint32_t((brio_rounds - 1 - brio_round(random)) * cells);
-    key[k] = cell;
-    ++start[cell + 1];
-  }
-  for(std::size_t c = 1; c < start.size(); ++c)
-    start[c] += start[c - 1];
-  for(std::size_t k = 0; k < m; ++k)
-    out[start[key[k]]++] = first[k];
+  std::vector<std::uint32_t> end;
+  counting_sort(
+      m, (biased_rounds ? brio_rounds : 1) * cells,
+      [&](std::size_t k) {
+        const auto& p = point_at(first[k]);
+        const std::size_t cx = column(CGAL::to_double(p.x())), cy = row(CGAL::to_double(p.y()));
+        std::size_t cell = cy * side + ((cy & 1) ? side - 1 - cx : cx);
+        if(biased_rounds) // (sequential: in item order)
+          cell += (brio_rounds - 1 - brio_round(random)) * cells;
+        return cell;
+      },
+      [&](std::size_t k, std::size_t position) { out[position] = first[k]; }, parallel, end);
   if(depth >= max_grid_depth)
     return;
   std::vector<Index> crowded;
-  for(std::size_t c = 0, begin = 0; c + 1 < start.size(); begin = start[c], ++c)
-    if(start[c] - begin > crowded_cell && start[c] - begin < m) { // m: all equal points, no progress
-      crowded.assign(out + begin, out + start[c]);
+  for(std::size_t c = 0, begin = 0; c < end.size(); begin = end[c], ++c)
+    if(end[c] - begin > crowded_cell && end[c] - begin < m) { // m: all equal points, no progress
+      crowded.assign(out + begin, out + end[c]);
       sort_serpentine(crowded.data(), crowded.data() + crowded.size(), out + begin, point_at, false, depth + 1);
     }
 }
@@ -107,12 +195,13 @@ void sort_serpentine(const Index* first, const Index* last, Index* out, PointAt 
 // `biased_rounds`, in rounds: the biased randomized insertion order (BRIO) that keeps
 // incremental insertion fast, at a tenth of the cost of spatial_sort's median splits.
 template <class Index, class PointAt>
-void sort_along_grid(std::vector<Index>& indices, PointAt point_at, bool biased_rounds)
+void sort_along_grid(std::vector<Index>& indices, PointAt point_at, bool biased_rounds, bool parallel = false)
 {
   if(indices.size() < 2)
     return;
   std::vector<Index> sorted(indices.size());
-  sort_serpentine(indices.data(), indices.data() + indices.size(), sorted.data(), point_at, biased_rounds, 0);
+  sort_serpentine(indices.data(), indices.data() + indices.size(), sorted.data(), point_at, biased_rounds, 0,
+                  parallel);
   indices.swap(sorted);
 }
 
@@ -148,15 +237,17 @@ public:
 
   // Decides and applies the reordering: renumbers the indices in `triples` (3 per face) and
   // permutes the faces. Afterwards old_index(v) is the caller's index of new point index v.
+  // With `parallel`, on TBB's threads, with the same result.
   template <class Gt, class PointIterator>
-  void compute(const Gt&, PointIterator points, std::size_t n, std::vector<std::uint32_t>& triples)
+  void compute(const Gt&, PointIterator points, std::size_t n, std::vector<std::uint32_t>& triples,
+               bool parallel = false)
   {
     if(n < min_points || triples.size() < 3 * min_points)
       return;
     if(!points_look_ordered(triples, n))
-      renumber_points(points, n, triples);
+      renumber_points(points, n, triples, parallel);
     if(!faces_look_ordered(triples, n))
-      sort_faces(triples, n);
+      sort_faces(triples, n, parallel);
   }
 
   bool renumbered() const { return !old_of_.empty(); }
@@ -199,40 +290,44 @@ private:
   }
 
   template <class PointIterator>
-  void renumber_points(PointIterator points, std::size_t n, std::vector<std::uint32_t>& triples)
+  void renumber_points(PointIterator points, std::size_t n, std::vector<std::uint32_t>& triples, bool parallel)
   {
     old_of_.resize(n);
-    for(std::size_t i = 0; i < n; ++i)
-      old_of_[i] = std::uint32_t(i);
-    sort_along_grid(old_of_, [&](std::uint32_t i) -> decltype(points[0]) { return points[i]; }, false);
     std::vector<std::uint32_t> new_of(n);
-    for(std::size_t v = 0; v < n; ++v)
-      new_of[old_of_[v]] = std::uint32_t(v);
-    for(std::uint32_t& v : triples)
-      v = new_of[v];
+    constexpr std::size_t block = 1 << 16;
+    for_each_block(parallel, (n + block - 1) / block, [&](std::size_t b) {
+      for(std::size_t i = b * block, end = (std::min)(n, i + block); i < end; ++i)
+        old_of_[i] = std::uint32_t(i);
+    });
+    sort_along_grid(old_of_, [&](std::uint32_t i) -> decltype(points[0]) { return points[i]; }, false, parallel);
+    for_each_block(parallel, (n + block - 1) / block, [&](std::size_t b) {
+      for(std::size_t v = b * block, end = (std::min)(n, v + block); v < end; ++v)
+        new_of[old_of_[v]] = std::uint32_t(v);
+    });
+    for_each_block(parallel, (triples.size() + block - 1) / block, [&](std::size_t b) {
+      for(std::size_t k = b * block, end = (std::min)(triples.size(), k + block); k < end; ++k)
+        triples[k] = new_of[triples[k]];
+    });
   }
 
   // Counting sort of the faces by their smallest index (in groups of four indices).
-  void sort_faces(std::vector<std::uint32_t>& triples, std::size_t n)
+  void sort_faces(std::vector<std::uint32_t>& triples, std::size_t n, bool parallel)
   {
-    const std::size_t faces = triples.size() / 3;
-    auto key_of = [&](std::size_t f) {
-      const std::uint32_t* t = triples.data() + 3 * f;
-      return (std::min)({t[0], t[1], t[2]}) >> 2;
-    };
-    std::vector<std::uint32_t> start((n >> 2) + 2, 0);
-    for(std::size_t f = 0; f < faces; ++f)
-      ++start[key_of(f) + 1];
-    for(std::size_t c = 1; c < start.size(); ++c)
-      start[c] += start[c - 1];
-    std::vector<std::uint32_t> sorted(triples.size());
-    for(std::size_t f = 0; f < faces; ++f) {
-      std::uint32_t* to = sorted.data() + 3 * std::size_t(start[key_of(f)]++);
-      const std::uint32_t* from = triples.data() + 3 * f;
-      to[0] = from[0];
-      to[1] = from[1];
-      to[2] = from[2];
-    }
+    std::vector<std::uint32_t> sorted(triples.size()), end;
+    counting_sort(
+        triples.size() / 3, (n >> 2) + 1,
+        [&](std::size_t f) {
+          const std::uint32_t* t = triples.data() + 3 * f;
+          return (std::min)({t[0], t[1], t[2]}) >> 2;
+        },
+        [&](std::size_t f, std::size_t position) {
+          std::uint32_t* to = sorted.data() + 3 * position;
+          const std::uint32_t* from = triples.data() + 3 * f;
+          to[0] = from[0];
+          to[1] = from[1];
+          to[2] = from[2];
+        },
+        parallel, end);
     triples.swap(sorted);
     faces_sorted_ = true;
   }
