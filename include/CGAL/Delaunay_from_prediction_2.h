@@ -271,7 +271,8 @@ Statistics make_delaunay(Triangulation& tr, const NamedParameters& np = paramete
     if(why == internal::Outcome::ok) {
       // Reinserted points make a few flips each, as in any incremental construction: they
       // count on top of the budget for the repair of the prediction.
-      if(internal::lawson_flip(tr, stack, max_flips + 4 * regions->detached().size(), stats.flips, touched)) {
+      if(internal::lawson_flip(tr, stack, max_flips + 4 * regions->detached().size(), stats.flips, touched,
+                               parallel)) {
         stats.faces_certified = stats.faces_in - stats.faces_carved -
                                 internal::count_distinct_addresses<typename Triangulation::Face>(
                                     modified, touched, 0, [&](const void* f) { return !regions->is_created(f); });
@@ -288,7 +289,7 @@ Statistics make_delaunay(Triangulation& tr, const NamedParameters& np = paramete
     internal::untangle_by_flips(tr, bad, stack, flips_before_carve, touched);
     stats.flips += flips_before_carve.size() - inline_flipped;
     if(!bad.empty()) {
-      why = internal::carve_in_place(tr, bad, stack, touched, flips_before_carve, max_flips, stats);
+      why = internal::carve_in_place(tr, bad, stack, touched, flips_before_carve, max_flips, stats, parallel);
       if(why == internal::Outcome::ok)
         return stats;
       if(why == internal::Outcome::flip_budget_exhausted)
@@ -300,7 +301,7 @@ Statistics make_delaunay(Triangulation& tr, const NamedParameters& np = paramete
      !internal::convexify_hull(tr, stack, hull_faces, stats.flips))
     why = internal::Outcome::hull_not_convex;
   if(why == internal::Outcome::ok) {
-    if(internal::lawson_flip(tr, stack, max_flips, stats.flips, touched)) {
+    if(internal::lawson_flip(tr, stack, max_flips, stats.flips, touched, parallel)) {
       stats.faces_certified = stats.faces_in - internal::count_distinct(touched, hull_faces);
       return stats;
     }

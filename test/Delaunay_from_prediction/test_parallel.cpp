@@ -9,6 +9,8 @@
 // and tiny coordinates). make_delaunay's parallel certification cuts a triangulation into
 // blocks of at least 32 faces, so even these small inputs cross many block boundaries; moves
 // large enough to invert many faces exercise the early stop shared between the blocks.
+// Lawson's flips in cells are tested on their own too (flips_in_cells), on enough flips that
+// the cells flip edges of their own and leave those across their boundaries to the final pass.
 
 #include <CGAL/Delaunay_from_prediction_2.h> // first: the header is self-contained
 
@@ -255,6 +257,130 @@ void reordering_is_the_same(CGAL::Random& rng)
   }
 }
 
+// Lawson's flips in cells (flips.h, lawson_flip_in_cells()) on a DT of uniform points and on a
+// co-circular grid, after random flips of convex quadrilaterals: the result is CGAL's DT in
+// every concurrency, with every edge listed and with only those around the flips; with a budget too
+// small, the call fails and leaves a valid triangulation. Enough flips that the cells run
+// flips of their own and leave flips across their boundaries to the final pass.
+void flips_in_cells(CGAL::Random& rng)
+{
+  using K = CGAL::Exact_predicates_inexact_constructions_kernel;
+  using Tr = DT_with_info<K>;
+  using Face_handle = Tr::Face_handle;
+  const XYs sets[] = {uniform_points(sized(20000), rng), grid_points(time_limit_scale == 1 ? 120 : 40, time_limit_scale == 1 ? 120 : 40, rng)};
+  for(const XYs& xy : sets) {
+    const std::vector<K::Point_2> points = to_points<K>(xy);
+    for(const bool all_edges : {false, true}) {
+      Scope s(all_edges ? "every edge listed" : "the edges of the flips listed");
+      for_each_concurrency([&] {
+        Tr tr = indexed_delaunay<K>(points);
+        std::vector<Face_handle> faces;
+        for(auto f = tr.finite_faces_begin(); f != tr.finite_faces_end(); ++f)
+          faces.push_back(f);
+        std::vector<std::pair<Face_handle, int>> stack;
+        CGAL::Random flip_rng{4242};
+        for(std::size_t k = 0; k < points.size() / 4; ++k) {
+          const Face_handle f = faces[std::size_t(flip_rng.get_int(0, int(faces.size())))];
+          const int i = flip_rng.get_int(0, 3);
+          const Face_handle g = f->neighbor(i);
+          if(tr.is_infinite(g))
+            continue;
+          const int j = tr.tds().mirror_index(f, i);
+          if(!DFP::internal::flip_makes_ccw_faces(tr.geom_traits(), f->vertex(i)->point(), f->vertex(tr.ccw(i))->point(),
+                                                  f->vertex(tr.cw(i))->point(), g->vertex(j)->point()))
+            continue;
+          // After the flip, f's edge ccw(i) is the new one; the edges around it may fail too.
+          tr.tds().flip(f, i);
+          for(const int k : {i, tr.ccw(i), tr.cw(i)})
+            stack.emplace_back(f, k);
+          stack.emplace_back(g, j);
+          stack.emplace_back(g, tr.cw(j));
+        }
+        if(all_edges) {
+          stack.clear();
+          for(const Face_handle f : faces)
+            for(int i = 0; i < 3; ++i)
+              stack.emplace_back(f, i);
+        }
+        DFP_CHECK(stack.size() >= 16 * DFP::internal::min_edges_to_flip_in_cells);
+        const bool parallel = current_concurrency() != Concurrency::sequential;
+        Tr too_few = tr;
+        {
+          std::vector<std::pair<Face_handle, int>> few_stack;
+          for(auto f = too_few.finite_faces_begin(); f != too_few.finite_faces_end(); ++f)
+            for(int i = 0; i < 3; ++i)
+              few_stack.emplace_back(f, i);
+          std::vector<Face_handle> touched;
+          std::size_t flips = 0;
+          DFP_CHECK(!DFP::internal::lawson_flip(too_few, few_stack, 10, flips, touched, parallel));
+          DFP_CHECK(static_cast<const Tr::Triangulation&>(too_few).is_valid()); // not Delaunay yet
+        }
+        std::vector<Face_handle> touched;
+        std::size_t flips = 0;
+        DFP_CHECK(DFP::internal::lawson_flip(tr, stack, 4 * points.size(), flips, touched, parallel));
+        DFP_CHECK(flips > 0 && touched.size() == 2 * flips);
+        check_is_cgal_delaunay(tr, points);
+      });
+    }
+  }
+}
+
+// The flip budget of the flips in cells: a few flips close together (most often in one cell),
+// every edge listed, every budget from 0 up. A call that succeeds must leave CGAL's DT (a task
+// that runs out of budget alone must fail the call even when the total is within it); one
+// that fails, a valid triangulation; and 16 flips are enough.
+void flip_budget_in_cells(CGAL::Random& rng)
+{
+  using K = CGAL::Exact_predicates_inexact_constructions_kernel;
+  using Tr = DT_with_info<K>;
+  using Face_handle = Tr::Face_handle;
+  const std::vector<K::Point_2> points = to_points<K>(uniform_points(2000, rng));
+  for_each_concurrency([&] {
+    const bool parallel = current_concurrency() != Concurrency::sequential;
+    for(int start = 0; start < 12; ++start) {
+      Tr damaged = indexed_delaunay<K>(points);
+      std::vector<Face_handle> faces;
+      for(auto f = damaged.finite_faces_begin(); f != damaged.finite_faces_end(); ++f)
+        faces.push_back(f);
+      // A walk of flips: each flips an edge of the faces the previous one made.
+      CGAL::Random flip_rng{static_cast<unsigned>(100 + start)};
+      Face_handle f = faces[std::size_t(flip_rng.get_int(0, int(faces.size())))];
+      std::size_t made = 0;
+      for(int tries = 0; tries < 40 && made < 3; ++tries) {
+        const int i = flip_rng.get_int(0, 3);
+        const Face_handle g = f->neighbor(i);
+        if(damaged.is_infinite(g) ||
+           !DFP::internal::flip_makes_ccw_faces(damaged.geom_traits(), f->vertex(i)->point(),
+                                                f->vertex(damaged.ccw(i))->point(), f->vertex(damaged.cw(i))->point(),
+                                                g->vertex(damaged.tds().mirror_index(f, i))->point()))
+          continue;
+        damaged.tds().flip(f, i);
+        ++made;
+        f = flip_rng.get_int(0, 2) == 0 ? f : g;
+      }
+      bool some_budget_is_enough = false;
+      for(std::size_t budget = 0; budget <= 16; ++budget) {
+        Scope s("walk ", start, ", budget ", budget);
+        Tr tr = damaged;
+        std::vector<std::pair<Face_handle, int>> stack;
+        for(auto h = tr.finite_faces_begin(); h != tr.finite_faces_end(); ++h)
+          for(int i = 0; i < 3; ++i)
+            stack.emplace_back(h, i);
+        std::vector<Face_handle> touched;
+        std::size_t flips = 0;
+        if(DFP::internal::lawson_flip(tr, stack, budget, flips, touched, parallel)) {
+          check_is_cgal_delaunay(tr, points);
+          DFP_CHECK(flips <= budget);
+          some_budget_is_enough = true;
+        } else {
+          DFP_CHECK(static_cast<const Tr::Triangulation&>(tr).is_valid());
+        }
+      }
+      DFP_CHECK(some_budget_is_enough); // 16 flips are enough to undo 3
+    }
+  });
+}
+
 // A malformed face read in parallel blocks throws as in order: for the first one.
 void first_malformed_face_is_named(CGAL::Random& rng)
 {
@@ -282,6 +408,8 @@ int main()
   CGAL::Random rng(777);
   DFP_RUN(reordering_is_the_same(rng));
   DFP_RUN(first_malformed_face_is_named(rng));
+  DFP_RUN(flips_in_cells(rng));
+  DFP_RUN(flip_budget_in_cells(rng));
   {
     Scope s("Epick");
     Parallel_test<CGAL::Exact_predicates_inexact_constructions_kernel> t;

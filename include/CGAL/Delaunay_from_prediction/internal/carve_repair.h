@@ -985,12 +985,14 @@ void carve_vertices_wound_twice(const Triangulation& tr, Carve_repair<Triangulat
 // (same objects), then flips. Returns Outcome::ok on success; otherwise why not, with `tr` either
 // as it was (the carve did not fit the budget, or the result would not be a triangulation:
 // rolled back) or a valid triangulation of the same vertices (the flip budget ran out).
+// With `parallel`, the final flips run on TBB's threads (lawson_flip()).
 // Never throws for duplicates: it returns first, and the caller's rebuild names them.
 template <class Triangulation>
 Outcome carve_in_place(Triangulation& tr, const std::vector<typename Triangulation::Face_handle>& bad,
                            std::vector<std::pair<typename Triangulation::Face_handle, int>>& stack,
                            std::vector<typename Triangulation::Face_handle>& touched,
-                           Flip_log<Triangulation>& flip_log, std::size_t max_flips, Statistics& stats)
+                           Flip_log<Triangulation>& flip_log, std::size_t max_flips, Statistics& stats,
+                           bool parallel = false)
 {
   using Face_handle = typename Triangulation::Face_handle;
   Carve_repair<Triangulation> carve(tr, true);
@@ -1033,7 +1035,7 @@ Outcome carve_in_place(Triangulation& tr, const std::vector<typename Triangulati
   stats.faces_carved = carve.faces_removed();
   stats.holes_refilled = carve.holes();
   stats.points_reinserted = carve.detached().size();
-  if(!lawson_flip(tr, stack, max_flips, stats.flips, touched))
+  if(!lawson_flip(tr, stack, max_flips, stats.flips, touched, parallel))
     return Outcome::flip_budget_exhausted;
   // The predicted faces modified: those flipped (before the carve or after it) that were
   // neither carved nor made by the repair, and those insertion split.

@@ -24,10 +24,17 @@
 #ifndef CGAL_DELAUNAY_FROM_PREDICTION_INTERNAL_FLIPS_H
 #define CGAL_DELAUNAY_FROM_PREDICTION_INTERNAL_FLIPS_H
 
+#include <CGAL/Delaunay_from_prediction/internal/concurrency.h>
+#include <CGAL/Delaunay_from_prediction/internal/grid.h>
 #include <CGAL/Delaunay_from_prediction/internal/predicates.h>
+#include <CGAL/Delaunay_from_prediction/internal/spatial_order.h>
 
 #include <algorithm>
+#include <atomic>
+#include <cmath>
 #include <cstddef>
+#include <cstdint>
+#include <limits>
 #include <utility>
 #include <vector>
 
@@ -199,18 +206,174 @@ bool flip_edges_while(Triangulation& tr,
 // rewrites, a quarter off the flip loop's time at 1e6 points); every caller flips a
 // triangulation whose finite faces are all ccw. With an inexact kernel the guard keeps every
 // face ccw.
+//
+// With `parallel` (CGAL::Parallel_tag), and at least min_edges_to_flip_in_cells candidate
+// edges, the flips run in cells on TBB's threads first: lawson_flip_in_cells() below.
+constexpr std::size_t min_edges_to_flip_in_cells = 64;
+
+template <class Triangulation>
+bool lawson_flip_in_cells(Triangulation& tr,
+                          std::vector<std::pair<typename Triangulation::Face_handle, int>>& stack,
+                          std::size_t max_flips, std::size_t& flips,
+                          std::vector<typename Triangulation::Face_handle>& touched);
+
 template <class Triangulation>
 bool lawson_flip(Triangulation& tr,
                  std::vector<std::pair<typename Triangulation::Face_handle, int>>& stack,
                  std::size_t max_flips, std::size_t& flips,
-                 std::vector<typename Triangulation::Face_handle>& touched)
+                 std::vector<typename Triangulation::Face_handle>& touched, bool parallel = false)
 {
+  if(parallel && stack.size() >= min_edges_to_flip_in_cells)
+    return lawson_flip_in_cells(tr, stack, max_flips, flips, touched);
   using Gt = typename Triangulation::Geom_traits;
   const Gt& gt = tr.geom_traits();
   auto not_locally_delaunay = [&gt](const auto&, int, const auto& a, const auto& b, const auto& c,
                                     const auto& d) { return !is_locally_delaunay(gt, a, b, c, d); };
   return flip_edges_while<has_exact_double_predicates<Gt>::value>(tr, stack, not_locally_delaunay, max_flips,
                                                                   flips, &touched);
+}
+
+// Lawson's algorithm on TBB's threads. The vertices are given to the cells of a grid over the
+// box of the candidate edges' faces, by their points (which flips never change); the task of
+// a cell flips only the edges whose four quadrilateral vertices lie in it, and leaves the
+// others to lawson_flip() after all tasks, which ends the work in order.
+//
+// Why the tasks do not race. A face keeps its vertices until it is flipped, and a task flips
+// only faces with all three vertices in its cell; so a face with two vertices in cell c keeps
+// them while the tasks run, and only c's task writes it: a flip writes the two faces flipped
+// (three vertices in c, before and after), the slots of the four faces around them that
+// point back (two vertices in c: an edge of the quadrilateral) and the face slots of the
+// four vertices (in c). c's task reads only such faces (those on its stack have three
+// vertices in c, those across their edges two), points, which nothing writes, and, to sort
+// the candidate edges it starts from, the vertex slots of faces with a vertex in c, which
+// only c's task may change.
+//
+// Why the result is the same. Every flip queues the four edges around it, so every edge
+// that is not locally Delaunay is always on a task's stack, a deferred list or the final
+// stack, and a triangulation of the same vertices is valid after every flip: Lawson's
+// algorithm, in another order, ends at the same triangulation (the Delaunay triangulation,
+// unique under the perturbation). Only the number of flips may differ. The budget: the tasks
+// add their flips to a shared count every 256 flips and stop when it passes `max_flips`.
+
+template <class Triangulation>
+bool lawson_flip_in_cells(Triangulation& tr,
+                          std::vector<std::pair<typename Triangulation::Face_handle, int>>& stack,
+                          std::size_t max_flips, std::size_t& flips,
+                          std::vector<typename Triangulation::Face_handle>& touched)
+{
+  using Face_handle = typename Triangulation::Face_handle;
+  using Vertex_handle = typename Triangulation::Vertex_handle;
+  using Edge = std::pair<Face_handle, int>;
+  using Gt = typename Triangulation::Geom_traits;
+  const Gt& gt = tr.geom_traits();
+  const Vertex_handle infinite = tr.infinite_vertex();
+  const std::size_t m = stack.size();
+
+  // The box of the finite vertices of a sample of the faces on the stack (points outside it
+  // fall in the cells at its border).
+  const double inf = std::numeric_limits<double>::infinity();
+  Box box{inf, -inf, inf, -inf};
+  const std::size_t stride = (std::max)(std::size_t(1), m / 4096);
+  for(std::size_t k = 0; k < m; k += stride)
+    for(int v = 0; v < 3; ++v) {
+      const Vertex_handle u = stack[k].first->vertex(v);
+      if(u == infinite)
+        continue;
+      const double x = CGAL::to_double(u->point().x()), y = CGAL::to_double(u->point().y());
+      box.xmin = (std::min)(box.xmin, x);
+      box.xmax = (std::max)(box.xmax, x);
+      box.ymin = (std::min)(box.ymin, y);
+      box.ymax = (std::max)(box.ymax, y);
+    }
+  if(!(box.xmin <= box.xmax && box.ymin <= box.ymax))
+    return lawson_flip(tr, stack, max_flips, flips, touched);
+  // Cells of about 1024 candidate edges, 4 to 256 of them: few enough that most flips are
+  // inside a cell, enough for TBB to balance the threads. Which cell a point is in only
+  // steers (Grid_axis: no overflow, no NaN); any assignment gives the same triangulation.
+  const std::size_t side = (std::min)(std::size_t(16), (std::max)(std::size_t(2), std::size_t(std::sqrt(double(m) / 1024))));
+  const std::size_t cells = side * side;
+  const Grid_axis column(box.xmin, box.xmax, side), row(box.ymin, box.ymax, side);
+  auto cell_of = [&](const auto& p) {
+    return row(CGAL::to_double(p.y())) * side + column(CGAL::to_double(p.x()));
+  };
+  // Each candidate edge goes to the cell of its face's first vertex, or, if the face is
+  // infinite, to the last bucket, `cells` (hull edges are never flipped). Its task keeps it
+  // if the face's other vertices and the vertex across the edge are in the cell too, and
+  // leaves it to the final pass otherwise. (Reading the vertices of a face with a vertex in
+  // the cell is safe: only that cell's task may flip it. Its neighbours are read only once
+  // all three vertices are known to be in the cell.)
+  std::vector<Edge> sorted(m);
+  std::vector<std::uint32_t> end;
+  counting_sort(
+      m, cells + 1,
+      [&](std::size_t k) {
+        const Face_handle f = stack[k].first;
+        return f->has_vertex(infinite) ? cells : cell_of(f->vertex(0)->point());
+      },
+      [&](std::size_t k, std::size_t position) { sorted[position] = stack[k]; }, true, end);
+
+  // Each task keeps its flips, its deferred edges and the faces it touched to itself until
+  // it ends (no false sharing), then moves them to its cell's slot.
+  std::vector<std::vector<Edge>> deferred(cells);
+  std::vector<std::vector<Face_handle>> touched_in(cells);
+  std::vector<std::size_t> flips_in(cells, 0);
+  std::atomic<std::size_t> total_flips{flips};
+  std::atomic<bool> over_budget{false};
+  for_each_block(true, cells, [&](std::size_t cell) {
+    std::vector<Edge> cell_stack, cell_deferred;
+    const std::size_t first = cell == 0 ? 0 : end[cell - 1], last = end[cell];
+    for(std::size_t k = first; k < last; ++k) {
+#if defined(__GNUC__)
+      // Two loads per edge miss the cache: the face, then its vertices. Pipelined.
+      if(k + 16 < last)
+        __builtin_prefetch(sorted[k + 16].first.operator->());
+      if(k + 8 < last) {
+        __builtin_prefetch(sorted[k + 8].first->vertex(1).operator->());
+        __builtin_prefetch(sorted[k + 8].first->vertex(2).operator->());
+      }
+#endif
+      const Face_handle f = sorted[k].first;
+      if(cell_of(f->vertex(1)->point()) == cell && cell_of(f->vertex(2)->point()) == cell)
+        cell_stack.push_back(sorted[k]);
+      else
+        cell_deferred.push_back(sorted[k]);
+    }
+    std::vector<Face_handle> cell_touched;
+    std::size_t cell_flips = 0, published = 0;
+    // (b, c) the edge, a opposite in f (a, b, c in the cell), d opposite across it.
+    auto wants_flip = [&](Face_handle f, int i, const auto& a, const auto& b, const auto& c, const auto& d) {
+      CGAL_assertion(cell_of(a) == cell && cell_of(b) == cell && cell_of(c) == cell);
+      if(cell_of(d) != cell) {
+        cell_deferred.emplace_back(f, i);
+        return false;
+      }
+      if(is_locally_delaunay(gt, a, b, c, d))
+        return false;
+      if(cell_flips - published >= 256) {
+        if(total_flips.fetch_add(cell_flips - published) + (cell_flips - published) > max_flips)
+          over_budget = true;
+        published = cell_flips;
+      }
+      return !over_budget.load(std::memory_order_relaxed);
+    };
+    // A task that reaches the budget on its own leaves edges unflipped: the call fails.
+    if(!flip_edges_while<has_exact_double_predicates<Gt>::value>(tr, cell_stack, wants_flip, max_flips, cell_flips,
+                                                                 &cell_touched))
+      over_budget = true;
+    deferred[cell] = std::move(cell_deferred);
+    touched_in[cell] = std::move(cell_touched);
+    flips_in[cell] = cell_flips;
+  });
+  for(std::size_t c = 0; c < cells; ++c) {
+    flips += flips_in[c];
+    touched.insert(touched.end(), touched_in[c].begin(), touched_in[c].end());
+  }
+  if(over_budget || flips > max_flips)
+    return false;
+  stack.assign(sorted.begin() + end[cells - 1], sorted.end());
+  for(const std::vector<Edge>& d : deferred)
+    stack.insert(stack.end(), d.begin(), d.end());
+  return lawson_flip(tr, stack, max_flips, flips, touched);
 }
 
 // Undoes the logged flips (certification's, untangle_by_flips()'s), latest first.

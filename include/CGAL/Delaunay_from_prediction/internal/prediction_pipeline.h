@@ -189,7 +189,7 @@ Statistics delaunay_from_index_triples(PointIterator point_at, std::size_t n, co
   std::vector<Face_handle> touched;
   // Points reinserted by the t-division make a few flips each, on top of the budget.
   const std::size_t flip_budget = max_flips + (regions ? 4 * regions->detached().size() : 0);
-  if(!internal::lawson_flip(result, stack, flip_budget, stats.flips, touched))
+  if(!internal::lawson_flip(result, stack, flip_budget, stats.flips, touched, parallel))
     return build_from_scratch(Outcome::flip_budget_exhausted);
 
   // Points no face uses: duplicates of vertices, or points to insert.
