@@ -19,21 +19,21 @@ cd "$(dirname "${BASH_SOURCE[0]}")/.."
 scripts/install_dependencies.sh
 
 opt=${DFP_SANITIZE_OPT:--O0}
+tests=${DFP_SANITIZE_TESTS:-}
 # Debug keeps CGAL's and the package's assertions on; -g and ${opt} replace CMake's -O0.
+# DFP_TESTS makes the named tests the only ones built, so that -j2 compiles them two at a time.
 cmake -S . -B build-sanitize -DCMAKE_BUILD_TYPE=Debug \
   "-DCMAKE_CXX_FLAGS_DEBUG=-g ${opt}" \
   -DDFP_SANITIZE=ON \
   -DDFP_BUILD_EXAMPLES="${DFP_SANITIZE_EXAMPLES:-OFF}" \
   -DDFP_BUILD_BENCHMARKS=OFF \
   -DDFP_TEST_SUITES=OFF \
+  "-DDFP_TESTS=$(echo $tests | tr ' ' ';')" \
   -DCGAL_DO_NOT_WARN_ABOUT_CMAKE_BUILD_TYPE=TRUE
-tests=${DFP_SANITIZE_TESTS:-}
+cmake --build build-sanitize -j2
 if [ -n "$tests" ]; then
-  # shellcheck disable=SC2086 # one target per word
-  cmake --build build-sanitize -j2 --target $tests
   only="^(compilation_of__|execution___of__)($(echo $tests | tr ' ' '|'))\$"
 else
-  cmake --build build-sanitize -j2
   only=""
 fi
 
