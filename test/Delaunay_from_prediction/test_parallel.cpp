@@ -18,6 +18,7 @@
 
 #include <CGAL/Delaunay_from_predicted_edges_2.h>
 #include <CGAL/Delaunay_from_prediction/brio_dc.h>
+#include <CGAL/Delaunay_from_prediction/internal/prediction_generators.h>
 #include <CGAL/Delaunay_from_prediction/spanning_graph.h>
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -257,6 +258,17 @@ void reordering_is_the_same(CGAL::Random& rng)
   }
 }
 
+// Every (finite face, index) of `tr`: each interior edge twice, from both of its faces.
+template <class Tr>
+std::vector<std::pair<typename Tr::Face_handle, int>> every_edge_of(Tr& tr)
+{
+  std::vector<std::pair<typename Tr::Face_handle, int>> edges;
+  for(auto f = tr.finite_faces_begin(); f != tr.finite_faces_end(); ++f)
+    for(int i = 0; i < 3; ++i)
+      edges.emplace_back(f, i);
+  return edges;
+}
+
 // Lawson's flips in cells (flips.h, lawson_flip_in_cells()) on a DT of uniform points and on a
 // co-circular grid, after random flips of convex quadrilaterals: the result is CGAL's DT in
 // every concurrency, with every edge listed and with only those around the flips; with a budget too
@@ -283,33 +295,22 @@ void flips_in_cells(CGAL::Random& rng)
           const Face_handle f = faces[std::size_t(flip_rng.get_int(0, int(faces.size())))];
           const int i = flip_rng.get_int(0, 3);
           const Face_handle g = f->neighbor(i);
-          if(tr.is_infinite(g))
-            continue;
           const int j = tr.tds().mirror_index(f, i);
-          if(!DFP::internal::flip_makes_ccw_faces(tr.geom_traits(), f->vertex(i)->point(), f->vertex(tr.ccw(i))->point(),
-                                                  f->vertex(tr.cw(i))->point(), g->vertex(j)->point()))
-            continue;
           // After the flip, f's edge ccw(i) is the new one; the edges around it may fail too.
-          tr.tds().flip(f, i);
+          if(!DFP::internal::flip_if_convex(tr, f, i))
+            continue;
           for(const int k : {i, tr.ccw(i), tr.cw(i)})
             stack.emplace_back(f, k);
           stack.emplace_back(g, j);
           stack.emplace_back(g, tr.cw(j));
         }
-        if(all_edges) {
-          stack.clear();
-          for(const Face_handle f : faces)
-            for(int i = 0; i < 3; ++i)
-              stack.emplace_back(f, i);
-        }
+        if(all_edges)
+          stack = every_edge_of(tr);
         DFP_CHECK(stack.size() >= 16 * DFP::internal::min_edges_to_flip_in_cells);
         const bool parallel = current_concurrency() != Concurrency::sequential;
         Tr too_few = tr;
         {
-          std::vector<std::pair<Face_handle, int>> few_stack;
-          for(auto f = too_few.finite_faces_begin(); f != too_few.finite_faces_end(); ++f)
-            for(int i = 0; i < 3; ++i)
-              few_stack.emplace_back(f, i);
+          std::vector<std::pair<Face_handle, int>> few_stack = every_edge_of(too_few);
           std::vector<Face_handle> touched;
           std::size_t flips = 0;
           DFP_CHECK(!DFP::internal::lawson_flip(too_few, few_stack, 10, flips, touched, parallel));
@@ -349,12 +350,8 @@ void flip_budget_in_cells(CGAL::Random& rng)
       for(int tries = 0; tries < 40 && made < 3; ++tries) {
         const int i = flip_rng.get_int(0, 3);
         const Face_handle g = f->neighbor(i);
-        if(damaged.is_infinite(g) ||
-           !DFP::internal::flip_makes_ccw_faces(damaged.geom_traits(), f->vertex(i)->point(),
-                                                f->vertex(damaged.ccw(i))->point(), f->vertex(damaged.cw(i))->point(),
-                                                g->vertex(damaged.tds().mirror_index(f, i))->point()))
+        if(!DFP::internal::flip_if_convex(damaged, f, i))
           continue;
-        damaged.tds().flip(f, i);
         ++made;
         f = flip_rng.get_int(0, 2) == 0 ? f : g;
       }
@@ -362,10 +359,7 @@ void flip_budget_in_cells(CGAL::Random& rng)
       for(std::size_t budget = 0; budget <= 16; ++budget) {
         Scope s("walk ", start, ", budget ", budget);
         Tr tr = damaged;
-        std::vector<std::pair<Face_handle, int>> stack;
-        for(auto h = tr.finite_faces_begin(); h != tr.finite_faces_end(); ++h)
-          for(int i = 0; i < 3; ++i)
-            stack.emplace_back(h, i);
+        std::vector<std::pair<Face_handle, int>> stack = every_edge_of(tr);
         std::vector<Face_handle> touched;
         std::size_t flips = 0;
         if(DFP::internal::lawson_flip(tr, stack, budget, flips, touched, parallel)) {
