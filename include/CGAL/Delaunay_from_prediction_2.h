@@ -312,8 +312,16 @@ Statistics make_delaunay(Triangulation& tr, const NamedParameters& np = paramete
   stats.fallback_reason = internal::fallback_reason(why);
   stats.faces_certified = 0;
   stats.points_reinserted = 0;
+  // With `parallel`, the faces are built aside by regions (region_parallel_build.h).
+  const std::size_t blocks = parallel ? internal::default_region_blocks(tr.number_of_vertices(),
+                                                                      internal::available_threads())
+                                      : 1;
+  auto build_by_regions = [&](auto& aside, auto points, std::size_t n) {
+    Statistics ignored;
+    return blocks > 1 && internal::build_by_regions(aside, points, n, ignored, blocks);
+  };
   try {
-    internal::rebuild_keeping_vertices(tr, stats); // leaves `tr` as it is when it throws
+    internal::rebuild_keeping_vertices(tr, stats, build_by_regions); // leaves `tr` as it is when it throws
   } catch(const Invalid_prediction&) {
     internal::undo_flips(tr, flips_before_carve);
     throw;

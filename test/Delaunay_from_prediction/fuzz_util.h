@@ -86,6 +86,7 @@ struct Case
   bool screen = true;         // screen_prediction
   bool t2 = false;            // make_delaunay on a plain Triangulation_2
   bool parallel = false;      // called with CGAL::Parallel_if_available_tag (the prediction entry points, make_delaunay)
+  long long region_block_points = -1; // with `parallel`: Region_build_thresholds::min_points_per_block (-1: default)
   unsigned param_seed = 0;    // random_seed for brio / split (0: not given)
   double sample_probability = -1;
   XYs pts;                    // points; make_delaunay: initial points; imprecise: centres
@@ -108,6 +109,7 @@ inline std::string describe(const Case& c)
   if(!c.screen) s << " screen_prediction=false";
   if(c.t2) s << " triangulation=Triangulation_2";
   if(c.parallel) s << " concurrency=Parallel_if_available_tag";
+  if(c.region_block_points >= 0) s << " region_block_points=" << c.region_block_points;
   if(c.param_seed) s << " random_seed=" << c.param_seed;
   if(c.sample_probability > 0) s << " sample_probability=" << c.sample_probability;
   return s.str();

@@ -4,7 +4,8 @@
 //
 // Differential fuzzer: random point families x prediction families x kernels x entry points x
 // named parameters x, for make_delaunay and the prediction entry points, the concurrency tag
-// (Sequential_tag or Parallel_if_available_tag), each result compared with CGAL's Delaunay_triangulation_2 built from
+// (Sequential_tag or Parallel_if_available_tag, with blocks of a few points for the region-parallel
+// build from scratch), each result compared with CGAL's Delaunay_triangulation_2 built from
 // scratch with the same kernel (as index triples, vertex sets and info), plus the consistency of
 // the Statistics, is_valid(), and "malformed input throws Invalid_prediction and changes
 // nothing". Seeded and budgeted; cases run in forked children so that a crash or a hang is
@@ -589,8 +590,24 @@ static Case gen_case(unsigned long long seed, long long k)
     break;
   }
   }
+  // Builds from scratch by regions (region_parallel_build.h) at the fuzzer's sizes: blocks of
+  // a few points, so that most points are near a seam.
+  if(c.parallel && rng.get_int(0, 2) == 0)
+    c.region_block_points = rng.get_int(3, 64);
   return c;
 }
+
+// Region_build_thresholds::min_points_per_block as the case says, for one call.
+struct Region_blocks_of
+{
+  DFP::internal::Region_build_thresholds saved = DFP::internal::region_build_thresholds();
+  explicit Region_blocks_of(const Case& c)
+  {
+    if(c.region_block_points >= 0)
+      DFP::internal::region_build_thresholds().min_points_per_block = std::size_t(c.region_block_points);
+  }
+  ~Region_blocks_of() { DFP::internal::region_build_thresholds() = saved; }
+};
 
 // ---------------------------------------------------------------------------------------------
 // Checks
@@ -768,6 +785,7 @@ void run_dfp(Checker& ck, const Case& c, bool exact)
                       DFP::parameters::screen_prediction(c.screen)))));
   };
   expect_no_throw(ck, [&] {
+    const Region_blocks_of blocks(c);
     if(c.parallel)
       call_with(CGAL::Parallel_if_available_tag());
     else
@@ -826,6 +844,7 @@ void run_md(Checker& ck, const Case& c, bool exact)
                                                                                       : 3 * P0.size() / 4 + 64)));
   };
   auto call = [&] {
+    const Region_blocks_of blocks(c);
     if(c.parallel)
       call_with(CGAL::Parallel_if_available_tag());
     else

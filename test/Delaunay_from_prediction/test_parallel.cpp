@@ -397,6 +397,140 @@ void first_malformed_face_is_named(CGAL::Random& rng)
   });
 }
 
+// A face as its index triple rotated so that its smallest index comes first.
+Face canonical(Face f)
+{
+  std::rotate(f.begin(), std::min_element(f.begin(), f.end()), f.end());
+  return f;
+}
+
+// The region-parallel build (region_parallel_build.h) with 2 to 64 blocks, so that small sets
+// have many seams, on degenerate sets too: CGAL's DT with the duplicates counted, the blocks'
+// kept faces and the seams' faces meeting at walls that are all locally Delaunay (so nothing
+// was left to repair), and faces kept (not everything redone in the seams). A set on one line
+// has no region build: false, and the triangulation left empty.
+void regions_build(CGAL::Random& rng)
+{
+  auto run = [&](auto kernel, const char* name, const XYs& xy) {
+    using K = decltype(kernel);
+    Scope s(name);
+    const std::vector<typename K::Point_2> points = to_points<K>(xy);
+    const std::size_t n = points.size();
+    const DT_with_info<K> reference = indexed_delaunay<K>(points);
+    for_each_concurrency([&] {
+      const bool parallel = current_concurrency() != Concurrency::sequential;
+      for(const std::size_t blocks : {2, 4, 16, 64}) {
+        Scope b(blocks, " blocks");
+        DT_with_info<K> dt;
+        DFP::Statistics st;
+        DFP::internal::Region_build_report report;
+        const bool built = DFP::internal::build_by_regions(dt, points.begin(), n, st, blocks, parallel, &report);
+        DFP_CHECK(built == (reference.dimension() == 2));
+        if(!built) {
+          DFP_CHECK(dt.number_of_vertices() == 0 && dt.tds().is_valid());
+          continue;
+        }
+        check_is_cgal_delaunay(dt, points);
+        DFP_CHECK_MSG(st.duplicate_points == n - reference.number_of_vertices(), st.duplicate_points);
+        DFP_CHECK_MSG(report.walls_failing == 0, report.walls_failing << " of " << report.walls);
+        DFP_CHECK(report.blocks == blocks);
+        if(n >= 1000 && blocks <= 4)
+          DFP_CHECK_MSG(report.kept_faces > dt.number_of_faces() / 2 && report.walls > 0,
+                        report.kept_faces << " kept of " << dt.number_of_faces());
+      }
+    });
+  };
+  using Epick = CGAL::Exact_predicates_inexact_constructions_kernel;
+  run(Epick(), "uniform", uniform_points(sized(3000), rng));
+  run(Epick(), "clustered", clustered_points(sized(3000), rng));
+  run(Epick(), "grid (co-circular)", grid_points(time_limit_scale == 1 ? 50 : 20, time_limit_scale == 1 ? 50 : 20, rng));
+  run(Epick(), "lattice circles (co-circular)", lattice_circle_points(time_limit_scale == 1 ? 40 : 20, rng, 5));
+  run(Epick(), "collinear", collinear_points(sized(300), rng));
+  run(Epick(), "uniform with 30% duplicates", with_duplicates(uniform_points(sized(1500), rng), sized(450), rng));
+  run(Epick(), "uniform scaled by 1e290", transformed(uniform_points(sized(1500), rng), 1e290, 0.));
+  run(Epick(), "uniform scaled by 1e-290", transformed(uniform_points(sized(1500), rng), 1e-290, 0.));
+  run(Epick(), "uniform offset by 1e15", transformed(uniform_points(sized(1500), rng), 1., 1e15));
+  run(Epick(), "three points", uniform_points(3, rng));
+  run(CGAL::Exact_predicates_exact_constructions_kernel(), "Epeck grid (co-circular)", grid_points(20, 20, rng));
+}
+
+// The entry points build by regions on two threads once the size threshold is lowered: a
+// prediction that falls back, a rebuild requested, make_delaunay after large moves.
+void regions_in_entry_points(CGAL::Random& rng)
+{
+  using K = CGAL::Exact_predicates_inexact_constructions_kernel;
+  auto& thresholds = DFP::internal::region_build_thresholds();
+  const DFP::internal::Region_build_thresholds defaults = thresholds;
+  DFP_CHECK(DFP::internal::default_region_blocks(std::size_t(1) << 20, 1) == 1);
+  DFP_CHECK(DFP::internal::default_region_blocks(std::size_t(1) << 20, 2) == 4);
+  DFP_CHECK(DFP::internal::default_region_blocks(std::size_t(1) << 20, 8) == 16);
+  DFP_CHECK(DFP::internal::default_region_blocks(std::size_t(1) << 16, 8) == 2);
+  thresholds.min_points_per_block = 200;
+  const std::size_t n = 3000;
+  DFP_CHECK(DFP::internal::default_region_blocks(n, 2) == 4 && DFP::internal::default_region_blocks(n, 1) == 1);
+  const std::vector<K::Point_2> points = to_points<K>(with_duplicates(uniform_points(n, rng), 50, rng));
+  const XYs grid = grid_points(40, 40, rng);
+  const Faces triples = random_triples(points.size(), 2 * points.size(), rng);
+  for_each_concurrency([&] {
+    {
+      Scope s("random triples");
+      DT_with_info<K> dt;
+      const DFP::Statistics st =
+          with_concurrency([&](auto tag) { return DFP::delaunay_from_prediction<decltype(tag)>(points, triples, dt); });
+      DFP_CHECK(st.fell_back && st.duplicate_points == 50);
+      check_is_cgal_delaunay(dt, points);
+    }
+    {
+      Scope s("make_delaunay, rebuild");
+      DT_with_info<K> tr = indexed_delaunay<K>(points);
+      std::vector<K::Point_2> moved;
+      for(auto v = tr.finite_vertices_begin(); v != tr.finite_vertices_end(); ++v) {
+        v->info() = moved.size();
+        v->set_point(K::Point_2(v->point().x() + rng.get_double(-0.01, 0.01), v->point().y()));
+        moved.push_back(v->point());
+      }
+      with_concurrency([&](auto tag) {
+        return DFP::make_delaunay<decltype(tag)>(tr, DFP::parameters::strategy(DFP::Strategy::rebuild));
+      });
+      check_is_cgal_delaunay(tr, moved);
+      for(auto v = tr.finite_vertices_begin(); v != tr.finite_vertices_end(); ++v)
+        DFP_CHECK(v->point() == moved[v->info()]);
+    }
+    for(const bool duplicate : {false, true}) {
+      Scope s("make_delaunay, a co-circular grid's points permuted", duplicate ? ", two at one point" : "");
+      DT_with_info<K> tr = indexed_delaunay<K>(to_points<K>(grid));
+      std::vector<std::size_t> permutation(grid.size());
+      for(std::size_t k = 0; k < grid.size(); ++k)
+        permutation[k] = k;
+      shuffle(permutation, rng);
+      if(duplicate)
+        permutation[1] = permutation[0];
+      std::vector<K::Point_2> moved;
+      for(auto v = tr.finite_vertices_begin(); v != tr.finite_vertices_end(); ++v) {
+        v->info() = moved.size();
+        v->set_point(K::Point_2(grid[permutation[moved.size()]].x, grid[permutation[moved.size()]].y));
+        moved.push_back(v->point());
+      }
+      auto face_set = [&] {
+        Faces faces = faces_by_info(tr);
+        for(Face& f : faces)
+          f = canonical(f);
+        std::sort(faces.begin(), faces.end());
+        return faces;
+      };
+      const Faces before = face_set();
+      try {
+        const DFP::Statistics st = with_concurrency([&](auto tag) { return DFP::make_delaunay<decltype(tag)>(tr); });
+        DFP_CHECK(!duplicate && st.fell_back);
+        check_is_cgal_delaunay(tr, moved);
+      } catch(const DFP::Invalid_prediction&) {
+        DFP_CHECK(duplicate && tr.tds().is_valid() && face_set() == before); // `tr` as it was
+      }
+    }
+  });
+  thresholds = defaults;
+}
+
 int main()
 {
   CGAL::Random rng(777);
@@ -404,6 +538,8 @@ int main()
   DFP_RUN(first_malformed_face_is_named(rng));
   DFP_RUN(flips_in_cells(rng));
   DFP_RUN(flip_budget_in_cells(rng));
+  DFP_RUN(regions_build(rng));
+  DFP_RUN(regions_in_entry_points(rng));
   {
     Scope s("Epick");
     Parallel_test<CGAL::Exact_predicates_inexact_constructions_kernel> t;

@@ -10,12 +10,15 @@
 
 #include <CGAL/tags.h>
 
+#include <algorithm>
 #include <cstddef>
 #include <type_traits>
 
 #ifdef CGAL_LINKED_WITH_TBB
 #include <tbb/blocked_range.h>
+#include <tbb/global_control.h>
 #include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
 #endif
 
 namespace CGAL {
@@ -63,6 +66,19 @@ void for_each_block(bool parallel, std::size_t blocks, const Body& body)
 #endif
   for(std::size_t b = 0; b < blocks; ++b)
     body(b);
+}
+
+// The number of threads for_each_block() may use: TBB's limit in the current arena (and
+// global_control), 1 without TBB.
+inline std::size_t available_threads()
+{
+#ifdef CGAL_LINKED_WITH_TBB
+  const std::size_t arena = std::size_t((std::max)(1, tbb::this_task_arena::max_concurrency()));
+  const std::size_t allowed = tbb::global_control::active_value(tbb::global_control::max_allowed_parallelism);
+  return (std::max)(std::size_t(1), (std::min)(arena, allowed));
+#else
+  return 1;
+#endif
 }
 
 } // namespace internal

@@ -18,6 +18,7 @@
 #include <CGAL/Delaunay_from_prediction/internal/outcome.h>
 #include <CGAL/Delaunay_from_prediction/internal/prediction_screens.h>
 #include <CGAL/Delaunay_from_prediction/internal/rebuild.h>
+#include <CGAL/Delaunay_from_prediction/internal/region_parallel_build.h>
 #include <CGAL/Delaunay_from_prediction/internal/region_repair.h>
 #include <CGAL/Delaunay_from_prediction/internal/sort_addresses.h>
 #include <CGAL/Delaunay_from_prediction/internal/spanning_tree_insertion.h>
@@ -37,7 +38,8 @@ namespace internal {
 // delaunay_from_prediction() for traits with exact predicates, on the points point_at[0..n)
 // (checked finite by the caller) and the faces: import and certify the index triples (a
 // malformed face throws before `dt` changes), repair locally (carve, t-division), flip, insert
-// the unused points; a build from scratch when a stage gives up. `stats` comes with faces_in set.
+// the unused points; a build from scratch when a stage gives up (with `parallel`, by regions:
+// region_parallel_build.h). `stats` comes with faces_in set.
 template <class PointIterator, class FaceRange, class DT>
 Statistics delaunay_from_index_triples(PointIterator point_at, std::size_t n, const FaceRange& faces,
                                        std::size_t number_of_faces, DT& dt, std::size_t max_flips, bool screen,
@@ -89,7 +91,9 @@ Statistics delaunay_from_index_triples(PointIterator point_at, std::size_t n, co
     DT fresh(gt);
     if(strategy != Strategy::spanning_tree || !fits || n >= std::size_t(internal::no_rank)) {
       std::vector<std::uint32_t>().swap(triples); // not needed: keep the peak memory down
-      internal::build_from_scratch(fresh, point_at, n, stats, grid_order);
+      const std::size_t blocks = parallel ? internal::default_region_blocks(n, internal::available_threads()) : 1;
+      if(blocks < 2 || !internal::build_by_regions(fresh, point_at, n, stats, blocks))
+        internal::build_from_scratch(fresh, point_at, n, stats, grid_order);
     } else {
       // Two edges of each face keep its three corners connected (`triples` is still as read:
       // the import, which reorders it, did not run).

@@ -14,6 +14,7 @@
 #define CGAL_DELAUNAY_FROM_PREDICTION_INTERNAL_REBUILD_H
 
 #include <CGAL/Delaunay_from_prediction/Statistics.h>
+#include <CGAL/Delaunay_from_prediction/internal/concurrency.h>
 #include <CGAL/Delaunay_from_prediction/internal/predicates.h>
 #include <CGAL/Delaunay_from_prediction/internal/insertion.h>
 #include <CGAL/Delaunay_from_prediction/internal/outcome.h>
@@ -31,6 +32,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <sstream>
+#include <type_traits>
 #include <vector>
 
 namespace CGAL {
@@ -84,30 +86,47 @@ void insert_points(DT& dt, PointIterator points, std::vector<std::size_t>& indic
 
 // Copies the faces of the Delaunay triangulation `aside` into the TDS of `tr`, whose faces
 // are dropped: `vertex_of(aside vertex)` gives the vertex of `tr` for each vertex of `aside`
-// (the infinite one included). A face of dimension d has max(1, d + 1) vertex slots and
-// d + 1 neighbors. Uses the faces' info() of `aside`.
+// (the infinite one included; called on several threads with `parallel`). A face of dimension d
+// has max(1, d + 1) vertex slots and d + 1 neighbors. Uses the faces' info() of `aside`. With
+// `parallel`, the faces are created in chunks on TBB's threads, each in a container of its own
+// (CGAL's containers are not thread-safe), spliced in chunk order, and linked on TBB's threads.
 template <class Aside, class Triangulation, class VertexOf>
-void transplant(Aside& aside, Triangulation& tr, VertexOf vertex_of)
+void transplant(Aside& aside, Triangulation& tr, VertexOf vertex_of, bool parallel = false)
 {
   using Face_handle = typename Triangulation::Face_handle;
+  using Face_range = typename Triangulation::Triangulation_data_structure::Face_range;
   auto& tds = tr.tds();
   const int dimension = aside.dimension();
   const int slots = (std::max)(1, dimension + 1);
   const int neighbors = (std::max)(0, dimension + 1);
+  const std::size_t m = aside.tds().faces().size();
+  std::vector<typename Aside::Face_handle> from;
+  from.reserve(m);
+  for(auto f = aside.tds().faces().begin(); f != aside.tds().faces().end(); ++f) {
+    f->info() = from.size();
+    from.push_back(f);
+  }
+  std::vector<Face_handle> face_of(m);
+  constexpr std::size_t chunk_size = std::size_t(1) << 15;
+  const std::size_t chunks = parallel ? (m + chunk_size - 1) / chunk_size : 1;
+  std::vector<Face_range> created(chunks > 1 ? chunks : 0);
   tds.faces().clear();
   tds.set_dimension(dimension);
-  std::vector<Face_handle> face_of;
-  face_of.reserve(aside.tds().faces().size());
-  for(auto f = aside.tds().faces().begin(); f != aside.tds().faces().end(); ++f) {
-    f->info() = face_of.size();
-    const Face_handle g = tds.create_face();
-    for(int j = 0; j < slots; ++j)
-      g->set_vertex(j, vertex_of(f->vertex(j)));
-    face_of.push_back(g);
-  }
-  for(auto f = aside.tds().faces().begin(); f != aside.tds().faces().end(); ++f)
-    for(int j = 0; j < neighbors; ++j)
-      face_of[f->info()]->set_neighbor(j, face_of[f->neighbor(j)->info()]);
+  for_each_block(chunks > 1, chunks, [&](std::size_t c) {
+    for(std::size_t k = c * m / chunks, end = (c + 1) * m / chunks; k < end; ++k) {
+      const Face_handle g = chunks > 1 ? created[c].emplace() : tds.create_face();
+      for(int j = 0; j < slots; ++j)
+        g->set_vertex(j, vertex_of(from[k]->vertex(j)));
+      face_of[k] = g;
+    }
+  });
+  for(Face_range& range : created)
+    tds.faces().merge(range);
+  for_each_block(chunks > 1, chunks, [&](std::size_t c) {
+    for(std::size_t k = c * m / chunks, end = (c + 1) * m / chunks; k < end; ++k)
+      for(int j = 0; j < neighbors; ++j)
+        face_of[k]->set_neighbor(j, face_of[from[k]->neighbor(j)->info()]);
+  });
   for(auto v = aside.tds().vertices().begin(); v != aside.tds().vertices().end(); ++v)
     vertex_of(v)->set_face(face_of[v->face()->info()]);
 }
@@ -221,8 +240,11 @@ void build_with_exact_predicates(DT& dt, PointIterator points, std::size_t n, St
 // insertion (insert_by_index(); with inexact predicates, by exact ones: build_deciding()), then transplanted face by
 // face, any dimension included. If two vertices are at the same point (for inexact predicates: by the traits'
 // compare_xy, before any insertion), throws Invalid_prediction naming both, before `tr` is modified.
-template <class Triangulation>
-void rebuild_keeping_vertices(Triangulation& tr, Statistics& stats)
+// `build_aside(aside, points, n)`, if given, may build the triangulation aside instead (with
+// vertex info the point index), returning false when it did not; one that lost a point (two at
+// the same point) is built again by the insertion, which names them.
+template <class Triangulation, class BuildAside = std::nullptr_t>
+void rebuild_keeping_vertices(Triangulation& tr, Statistics& stats, BuildAside build_aside = nullptr)
 {
   using Gt = typename Triangulation::Geom_traits;
   using Point = typename Triangulation::Point;
@@ -278,16 +300,23 @@ void rebuild_keeping_vertices(Triangulation& tr, Statistics& stats)
       return v == exact.infinite_vertex() ? tr.infinite_vertex() : vertices[v->info()];
     });
   } else {
-    insert_by_index(aside, points.begin(), indices, [&](std::size_t i, auto v, bool is_new) {
-      if(is_new) {
-        v->info() = i;
-        return;
-      }
-      duplicates(i, v->info());
-    });
+    bool built = false;
+    if constexpr(!std::is_same<BuildAside, std::nullptr_t>::value) {
+      built = build_aside(aside, points.begin(), n) && aside.number_of_vertices() == n;
+      if(!built)
+        aside.clear();
+    }
+    if(!built)
+      insert_by_index(aside, points.begin(), indices, [&](std::size_t i, auto v, bool is_new) {
+        if(is_new) {
+          v->info() = i;
+          return;
+        }
+        duplicates(i, v->info());
+      });
     transplant(aside, tr, [&](typename Aside::Vertex_handle v) {
       return v == aside.infinite_vertex() ? tr.infinite_vertex() : vertices[v->info()];
-    });
+    }, built); // built aside by build_aside: on several threads
   }
 }
 
