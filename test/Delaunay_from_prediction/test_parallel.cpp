@@ -397,13 +397,6 @@ void first_malformed_face_is_named(CGAL::Random& rng)
   });
 }
 
-// A face as its index triple rotated so that its smallest index comes first.
-Face canonical(Face f)
-{
-  std::rotate(f.begin(), std::min_element(f.begin(), f.end()), f.end());
-  return f;
-}
-
 // The region-parallel build (region_parallel_build.h) with 2 to 64 blocks, so that small sets
 // have many seams, on degenerate sets too: CGAL's DT with the duplicates counted, the blocks'
 // kept faces and the seams' faces meeting at walls that are all locally Delaunay (so nothing

@@ -63,9 +63,9 @@ namespace internal {
 
 // When the entry points build by regions instead of sequentially: from 2 threads and 2 blocks
 // of min_points_per_block points. Measured at 1e6 points on 2 threads (bench_region_build.cpp,
-// benchmark/README.md): 1.46x the sequential build with 4 blocks, 1.15x with 2 (uneven halves
-// leave a thread idle), 1.39x with 8 (more seams); on one thread the blocks cost 14% more than
-// the sequential build. Smaller blocks make the seams' share grow (1.2% of the points with 8
+// benchmark/README.md): 1.58x the sequential build with 4 blocks, 1.23x with 2 (one half may
+// wait for the other), 1.51x with 8 (more seams); on one thread the region build costs 14% more
+// than the sequential build. Smaller blocks make the seams' share grow (1.2% of the points with 8
 // blocks at 1e6). Tests lower both to run the region build at small sizes.
 struct Region_build_thresholds
 {
