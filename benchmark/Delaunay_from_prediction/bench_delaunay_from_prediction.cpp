@@ -20,7 +20,7 @@
 //             the call is timed.
 //             CGAL's reference is a from-scratch build of the moved points.
 //   random    2n-5 random index triples (distinct indices) as a prediction.
-//   memory    peak heap bytes of the `shuffled` call vs CGAL's from-scratch build.
+//   memory    peak heap bytes of the `shuffled` and `random` calls vs CGAL's from-scratch build.
 //   kinetic   make_delaunay() on a CGAL DT with point indices in info() whose every vertex was
 //             moved by noise (--noise: gaussian, each coordinate N(0, s^2), or disk, uniform in
 //             the disk of radius s, or sparse, one vertex in 10,000 moved by gaussian noise of
@@ -265,55 +265,6 @@ Point moved(const Point& p, double step, std::uint64_t salt)
   const std::uint64_t h = mix(mix(bits(p.x()) ^ salt) ^ bits(p.y()));
   const double angle = 2. * M_PI * (double(h >> 11) * 0x1.0p-53);
   return Point(p.x() + step * std::cos(angle), p.y() + step * std::sin(angle));
-}
-
-// Mean spacing sqrt(A/n), A the area of the bounding box of the points (the unit of
-// moved_points_prediction() in prediction_models.h).
-double mean_spacing(const std::vector<Point>& points)
-{
-  if(points.empty())
-    return 0.;
-  double x0 = points[0].x(), x1 = x0, y0 = points[0].y(), y1 = y0;
-  for(const Point& p : points) {
-    x0 = std::min(x0, p.x());
-    x1 = std::max(x1, p.x());
-    y0 = std::min(y0, p.y());
-    y1 = std::max(y1, p.y());
-  }
-  return std::sqrt((x1 - x0) * (y1 - y0) / double(points.size()));
-}
-
-// The points moved by independent noise of scale `step`, point i by the i-th draw of a
-// generator seeded with `seed` (so the same seed gives the same field at every scale):
-// gaussian, each coordinate plus N(0, step^2); disk, a point uniform in the disk of radius step;
-// sparse, one point in 10,000 (the first, then every 10,000th) moved by Gaussian noise of
-// scale 10 step, the others not moved (a few wrong points: the case Theorem 2.1 is made for).
-std::vector<Point> noisy_points(const std::vector<Point>& points, const std::string& noise,
-                                double step, std::uint64_t seed)
-{
-  Rng rng{seed};
-  std::vector<Point> out;
-  out.reserve(points.size());
-  std::size_t index = 0;
-  for(const Point& p : points) {
-    double dx, dy;
-    if(noise == "sparse") { // one point in 10,000, ten times the step
-      dx = 10 * step * rng.normal();
-      dy = 10 * step * rng.normal();
-      if(index++ % 10000 != 0)
-        dx = dy = 0;
-    } else if(noise == "gaussian") {
-      dx = step * rng.normal();
-      dy = step * rng.normal();
-    } else {
-      const double radius = step * std::sqrt(rng.uniform());
-      const double angle = 2. * M_PI * rng.uniform();
-      dx = radius * std::cos(angle);
-      dy = radius * std::sin(angle);
-    }
-    out.emplace_back(p.x() + dx, p.y() + dy);
-  }
-  return out;
 }
 
 // Finite faces of `t` that are clockwise (inverted) and flat, e.g. after its points moved.
@@ -879,56 +830,66 @@ void run(const Options& o, const std::string& dist, std::size_t n, Report& repor
     measure_prediction(reps, report, new_row("random", "2n-5 random triples"), points, faces);
   }
 
-  // 6. Peak heap of case 1 (see namespace counting): ours vs CGAL's from-scratch build, each
-  //    measured once (the counts are deterministic), triangulation construction included.
+  // 6. Peak heap of case 1 (the prediction used) and of case 5 (the fallback: under
+  //    Parallel_tag the region build) (see namespace counting): ours vs CGAL's from-scratch
+  //    build, each measured once (the counts are deterministic), triangulation construction
+  //    included.
   if(o.wants("memory")) {
-    Row row = new_row("memory", "peak heap, shuffled");
-    row.memory = true;
-    Signature reference, s;
+    Signature reference;
+    std::size_t cgal_bytes = 0;
     {
       counting::Peak_scope scope;
       DT dt;
       dt.insert(points.begin(), points.end());
-      row.cgal_bytes = scope.bytes();
+      cgal_bytes = scope.bytes();
       reference = signature(dt);
     }
-    {
-      counting::Peak_scope scope;
-      DT dt;
-      try {
-        row.stats = DFP::delaunay_from_prediction(points, shuffled_faces, dt);
-        row.has_stats = true;
-      } catch(const std::exception& e) {
-        row.ok = false;
-        row.failure = std::string("exception: ") + e.what();
-      }
-      row.our_bytes = scope.bytes();
-      s = signature(dt);
-    }
-    if(row.ok && s != reference) {
-      row.ok = false;
-      row.failure = "ours: " + s.str() + "; CGAL: " + reference.str();
-    }
-    report.add(row);
-#ifdef CGAL_LINKED_WITH_TBB
-    if(parallel_threads > 0) { // the same call with CGAL::Parallel_tag in the arena
-      Row par = parallel_row(row);
+    auto measure_memory = [&](const std::string& param, const std::vector<Face>& faces) {
+      Row row = new_row("memory", param);
+      row.memory = true;
+      row.cgal_bytes = cgal_bytes;
+      Signature s;
       {
         counting::Peak_scope scope;
         DT dt;
-        in_arena([&] {
-          par.stats = DFP::delaunay_from_prediction<CGAL::Parallel_tag>(points, shuffled_faces, dt);
-          return 0.;
-        });
-        par.our_bytes = scope.bytes();
+        try {
+          row.stats = DFP::delaunay_from_prediction(points, faces, dt);
+          row.has_stats = true;
+        } catch(const std::exception& e) {
+          row.ok = false;
+          row.failure = std::string("exception: ") + e.what();
+        }
+        row.our_bytes = scope.bytes();
         s = signature(dt);
       }
-      par.ok = s == reference;
-      if(!par.ok)
-        par.failure = "ours: " + s.str() + "; CGAL: " + reference.str();
-      report.add(par);
-    }
+      if(row.ok && s != reference) {
+        row.ok = false;
+        row.failure = "ours: " + s.str() + "; CGAL: " + reference.str();
+      }
+      report.add(row);
+#ifdef CGAL_LINKED_WITH_TBB
+      if(parallel_threads > 0) { // the same call with CGAL::Parallel_tag in the arena
+        Row par = parallel_row(row);
+        {
+          counting::Peak_scope scope;
+          DT dt;
+          in_arena([&] {
+            par.stats = DFP::delaunay_from_prediction<CGAL::Parallel_tag>(points, faces, dt);
+            return 0.;
+          });
+          par.our_bytes = scope.bytes();
+          s = signature(dt);
+        }
+        par.ok = s == reference;
+        if(!par.ok)
+          par.failure = "ours: " + s.str() + "; CGAL: " + reference.str();
+        report.add(par);
+      }
 #endif
+    };
+    measure_memory("peak heap, shuffled", shuffled_faces);
+    Rng rng{seed_for(o.seed, "random/" + dist, n)}; // the triples of case 5
+    measure_memory("peak heap, random triples", random_triples(n, 2 * n - 5, rng));
   }
 
   // 7. Kinetic: make_delaunay() on CGAL's DT with point indices in info(), every vertex moved

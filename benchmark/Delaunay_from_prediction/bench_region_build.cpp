@@ -5,8 +5,10 @@
 // The region-parallel build (internal/region_parallel_build.h) against the package's sequential
 // build from scratch and CGAL's range insert, in the same run, for 2, 4 and 8 blocks in a TBB
 // arena of --threads threads; also the seams' share (points triangulated again) and the walls
-// that failed the in-circle test. These times decide from how many threads the entry points
-// build by regions (Region_build_thresholds). Times are medians of --reps repetitions, the
+// that failed the in-circle test, and the time of each stage of the region build (what limits
+// its scaling: the stages other than the blocks' triangulations run on one thread, or partly).
+// These times decide from how many threads the entry points build by regions
+// (Region_build_thresholds). Times are medians of --reps repetitions, the
 // calls alternating; every result is checked against CGAL's (face set signature).
 //
 // Usage: bench_region_build [--n 1e6] [--reps 5] [--threads 2] [--seed S]
@@ -56,7 +58,7 @@ int main(int argc, char** argv)
   for(const std::string dist : {"uniform", "clustered"}) {
     const std::vector<Point> points = distribution_points(dist, n, salted_seed(0x4e61, seed, dist, n));
     const std::size_t block_counts[] = {2, 4, 8};
-    std::vector<double> cgal, sequential, regions[3];
+    std::vector<double> cgal, sequential, regions[3], stage[3][4];
     internal::Region_build_report report[3];
     bool same = true;
     for(int r = 0; r < reps; ++r) {
@@ -78,6 +80,10 @@ int main(int argc, char** argv)
           });
         }, got));
         same = same && built && got == expected;
+        const double seconds[4] = {report[b].split_seconds, report[b].blocks_seconds, report[b].seams_seconds,
+                                   report[b].join_seconds};
+        for(int k = 0; k < 4; ++k)
+          stage[b][k].push_back(seconds[k]);
       }
     }
     all_same = all_same && same;
@@ -93,9 +99,15 @@ int main(int argc, char** argv)
                   median(cgal_reg), median(seq_reg), 100.0 * double(report[b].seam_points) / double(n),
                   report[b].walls_failing, same ? "ok" : "DIFFERENT");
     }
+    for(int b = 0; b < 3; ++b)
+      std::printf("%-9s %-6zu | stages: split %.4f s, blocks %.4f s (parallel), seams %.4f s, join %.4f s\n",
+                  dist.c_str(), block_counts[b], median(stage[b][0]), median(stage[b][1]), median(stage[b][2]),
+                  median(stage[b][3]));
   }
   std::printf("(seams: the points triangulated again for the seams; failing: walls repaired by flips;\n"
-              " times are medians, ratios medians of the ratios of each repetition)\n");
+              " times are medians, ratios medians of the ratios of each repetition; stages: medians of\n"
+              " the region build's own clock: the split into blocks, the blocks' triangulations on the\n"
+              " threads, DT(seam vertices) with the walls on one thread, the join)\n");
   return all_same ? 0 : 1;
 #endif
 }

@@ -26,6 +26,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <cstdio>
@@ -169,6 +170,55 @@ inline DTI build_indexed(const std::vector<Point>& points)
 {
   const auto with_index = with_indices(points);
   return DTI(with_index.begin(), with_index.end());
+}
+
+// Mean spacing sqrt(A/n), A the area of the bounding box of the points (the unit of
+// moved_points_prediction() in prediction_models.h).
+inline double mean_spacing(const std::vector<Point>& points)
+{
+  if(points.empty())
+    return 0.;
+  double x0 = points[0].x(), x1 = x0, y0 = points[0].y(), y1 = y0;
+  for(const Point& p : points) {
+    x0 = std::min(x0, p.x());
+    x1 = std::max(x1, p.x());
+    y0 = std::min(y0, p.y());
+    y1 = std::max(y1, p.y());
+  }
+  return std::sqrt((x1 - x0) * (y1 - y0) / double(points.size()));
+}
+
+// The points moved by independent noise of scale `step`, point i by the i-th draw of a
+// generator seeded with `seed` (so the same seed gives the same field at every scale):
+// gaussian, each coordinate plus N(0, step^2); disk, a point uniform in the disk of radius step;
+// sparse, one point in 10,000 (the first, then every 10,000th) moved by Gaussian noise of
+// scale 10 step, the others not moved (a few wrong points: the case Theorem 2.1 is made for).
+inline std::vector<Point> noisy_points(const std::vector<Point>& points, const std::string& noise,
+                                       double step, std::uint64_t seed)
+{
+  Rng rng{seed};
+  std::vector<Point> out;
+  out.reserve(points.size());
+  std::size_t index = 0;
+  for(const Point& p : points) {
+    double dx, dy;
+    if(noise == "sparse") { // one point in 10,000, ten times the step
+      dx = 10 * step * rng.normal();
+      dy = 10 * step * rng.normal();
+      if(index++ % 10000 != 0)
+        dx = dy = 0;
+    } else if(noise == "gaussian") {
+      dx = step * rng.normal();
+      dy = step * rng.normal();
+    } else {
+      const double radius = step * std::sqrt(rng.uniform());
+      const double angle = 2. * M_PI * rng.uniform();
+      dx = radius * std::cos(angle);
+      dy = radius * std::sin(angle);
+    }
+    out.emplace_back(p.x() + dx, p.y() + dy);
+  }
+  return out;
 }
 
 // Finite faces as point-index triples, in the order the triangulation iterates them.

@@ -286,7 +286,7 @@ Statistics make_delaunay(Triangulation& tr, const NamedParameters& np = paramete
   }
   if(why == internal::Outcome::ok && !bad.empty()) {
     const std::size_t inline_flipped = flips_before_carve.size();
-    internal::untangle_by_flips(tr, bad, stack, flips_before_carve, touched);
+    internal::untangle_by_flips(tr, bad, stack, flips_before_carve, touched, parallel);
     stats.flips += flips_before_carve.size() - inline_flipped;
     if(!bad.empty()) {
       why = internal::carve_in_place(tr, bad, stack, touched, flips_before_carve, max_flips, stats, parallel);

@@ -9,8 +9,9 @@
 // and tiny coordinates). make_delaunay's parallel certification cuts a triangulation into
 // blocks of at least 32 faces, so even these small inputs cross many block boundaries; moves
 // large enough to invert many faces exercise the early stop shared between the blocks.
-// Lawson's flips in cells are tested on their own too (flips_in_cells), on enough flips that
-// the cells flip edges of their own and leave those across their boundaries to the final pass.
+// Lawson's flips and make_delaunay's untangling flips in cells are tested on their own too
+// (flips_in_cells, untangling_in_cells), on enough flips that the cells flip edges of their
+// own and leave those across their boundaries to the final pass.
 
 #include <CGAL/Delaunay_from_prediction_2.h> // first: the header is self-contained
 
@@ -375,6 +376,70 @@ void flip_budget_in_cells(CGAL::Random& rng)
   });
 }
 
+// The untangling flips of make_delaunay in cells (flips.h, untangle_by_flips()) on a DT of
+// uniform points and on a grid whose vertices moved by up to 0.5 spacing (thousands of
+// inverted faces, enough that cells take faces of their own and leave those across their
+// boundaries to the final pass): in every concurrency the faces returned are exactly those
+// still not counterclockwise, every flip is logged, and undoing the log restores the
+// triangulation (vertex objects, points, connectivity); make_delaunay then gives CGAL's DT.
+void untangling_in_cells(CGAL::Random& rng)
+{
+  using K = CGAL::Exact_predicates_inexact_constructions_kernel;
+  using Tr = DT_with_info<K>;
+  using Face_handle = Tr::Face_handle;
+  namespace I = DFP::internal;
+  const XYs sets[] = {uniform_points(sized(20000), rng), grid_points(time_limit_scale == 1 ? 120 : 40, time_limit_scale == 1 ? 120 : 40, rng)};
+  for(const XYs& xy : sets) {
+    Scope s(&xy == &sets[0] ? "uniform" : "grid");
+    const std::vector<K::Point_2> points = to_points<K>(xy);
+    Tr moved = indexed_delaunay<K>(points);
+    std::vector<K::Point_2> moved_points = points;
+    CGAL::Random move_rng{31};
+    double xmin = points[0].x(), xmax = xmin, ymin = points[0].y(), ymax = ymin;
+    for(const K::Point_2& p : points) {
+      xmin = (std::min)(xmin, p.x());
+      xmax = (std::max)(xmax, p.x());
+      ymin = (std::min)(ymin, p.y());
+      ymax = (std::max)(ymax, p.y());
+    }
+    const double step = 0.5 * std::sqrt((xmax - xmin) * (ymax - ymin) / double(points.size())); // half the spacing
+    for(auto v = moved.finite_vertices_begin(); v != moved.finite_vertices_end(); ++v) {
+      const K::Point_2 p(v->point().x() + step * move_rng.get_double(-1, 1),
+                         v->point().y() + step * move_rng.get_double(-1, 1));
+      v->set_point(p);
+      moved_points[v->info()] = p;
+    }
+    for_each_concurrency([&] {
+      const bool parallel = current_concurrency() != Concurrency::sequential;
+      Tr tr = moved;
+      const Snapshot<Tr> before(tr);
+      std::vector<std::pair<Face_handle, int>> stack;
+      std::vector<Face_handle> bad, touched;
+      std::size_t tested = 0;
+      bool hull_is_convex = false;
+      DFP_CHECK(I::certify_triangulation(tr, stack, tested, hull_is_convex, &bad, tr.number_of_faces()) ==
+                I::Outcome::ok);
+      DFP_CHECK_MSG(bad.size() >= 4 * I::min_faces_to_untangle_in_cells, bad.size());
+      const std::size_t stacked = stack.size();
+      I::Flip_log<Tr> log;
+      I::untangle_by_flips(tr, bad, stack, log, touched, parallel);
+      DFP_CHECK(!log.empty() && touched.size() == 2 * log.size() && stack.size() == stacked + 6 * log.size());
+      std::vector<Face_handle> not_ccw;
+      for(auto f = tr.finite_faces_begin(); f != tr.finite_faces_end(); ++f)
+        if(CGAL::orientation(f->vertex(0)->point(), f->vertex(1)->point(), f->vertex(2)->point()) != CGAL::LEFT_TURN)
+          not_ccw.push_back(f);
+      std::sort(not_ccw.begin(), not_ccw.end());
+      DFP_CHECK(bad == not_ccw);
+      DFP_CHECK(tr.tds().is_valid());
+      I::undo_flips(tr, log);
+      check_unchanged(tr, before);
+      Tr repaired = moved;
+      DFP::make_delaunay<CGAL::Parallel_if_available_tag>(repaired);
+      check_is_cgal_delaunay(repaired, moved_points);
+    });
+  }
+}
+
 // A malformed face read in parallel blocks throws as in order: for the first one.
 void first_malformed_face_is_named(CGAL::Random& rng)
 {
@@ -531,6 +596,7 @@ int main()
   DFP_RUN(first_malformed_face_is_named(rng));
   DFP_RUN(flips_in_cells(rng));
   DFP_RUN(flip_budget_in_cells(rng));
+  DFP_RUN(untangling_in_cells(rng));
   DFP_RUN(regions_build(rng));
   DFP_RUN(regions_in_entry_points(rng));
   {

@@ -977,25 +977,21 @@ void carve_vertices_wound_twice(const Triangulation& tr, Carve_repair<Triangulat
   }
 }
 
-// The local repair of make_delaunay() for faces that are not counterclockwise: the stars of
-// their vertices carved, the holes filled, the vertices reinserted, then Lawson's flips.
-
 // make_delaunay's local repair of a triangulation with faces that are not counterclockwise
-// (`bad`): carves the stars of their vertices, fills the holes, reinserts those vertices
-// (same objects), then flips. Returns Outcome::ok on success; otherwise why not, with `tr` either
-// as it was (the carve did not fit the budget, or the result would not be a triangulation:
-// rolled back) or a valid triangulation of the same vertices (the flip budget ran out).
-// With `parallel`, the final flips run on TBB's threads (lawson_flip()).
-// Never throws for duplicates: it returns first, and the caller's rebuild names them.
+// (`bad`), up to the flips: carves the stars of their vertices, fills the holes and reinserts
+// those vertices (same objects); the edges to test are pushed on `stack`, the faces insertion
+// split on `modified`. Returns Outcome::ok on success; otherwise why not, with `tr` as it was
+// (the carve did not fit the budget, or the result would not be a triangulation: rolled back,
+// the flips in `flip_log` still undoable). Never throws for duplicates: it returns first, and
+// the caller's rebuild names them.
 template <class Triangulation>
-Outcome carve_in_place(Triangulation& tr, const std::vector<typename Triangulation::Face_handle>& bad,
+Outcome carve_and_reinsert(Carve_repair<Triangulation>& carve, Triangulation& tr,
+                           const std::vector<typename Triangulation::Face_handle>& bad,
                            std::vector<std::pair<typename Triangulation::Face_handle, int>>& stack,
-                           std::vector<typename Triangulation::Face_handle>& touched,
-                           Flip_log<Triangulation>& flip_log, std::size_t max_flips, Statistics& stats,
-                           bool parallel = false)
+                           Flip_log<Triangulation>& flip_log, std::vector<const void*>& modified,
+                           Statistics& stats)
 {
   using Face_handle = typename Triangulation::Face_handle;
-  Carve_repair<Triangulation> carve(tr, true);
   // A face inverted by moves usually has one vertex that crossed the opposite edge, the
   // longest one: carving that vertex's star leaves a simple hole (its old link) in most
   // cases, at a third of the faces of carving all three stars. Holes that are not simple are
@@ -1028,13 +1024,32 @@ Outcome carve_in_place(Triangulation& tr, const std::vector<typename Triangulati
     carve.rollback(flip_log); // the flips before the carve can still be undone
     return Outcome::carve_not_a_triangulation;
   }
-  std::vector<const void*> modified;
   carve.reinsert(stack, modified, [](auto, auto) {
     CGAL_assertion_msg(false, "duplicates were ruled out before the carve");
   });
   stats.faces_carved = carve.faces_removed();
   stats.holes_refilled = carve.holes();
   stats.points_reinserted = carve.detached().size();
+  return Outcome::ok;
+}
+
+// make_delaunay's whole local repair of faces that are not counterclockwise:
+// carve_and_reinsert(), then Lawson's flips. Returns Outcome::ok on success; otherwise why not,
+// with `tr` either as carve_and_reinsert() leaves it or, when the flip budget ran out, a valid
+// triangulation of the same vertices. With `parallel`, the flips run on TBB's threads
+// (lawson_flip()).
+template <class Triangulation>
+Outcome carve_in_place(Triangulation& tr, const std::vector<typename Triangulation::Face_handle>& bad,
+                       std::vector<std::pair<typename Triangulation::Face_handle, int>>& stack,
+                       std::vector<typename Triangulation::Face_handle>& touched,
+                       Flip_log<Triangulation>& flip_log, std::size_t max_flips, Statistics& stats,
+                       bool parallel = false)
+{
+  Carve_repair<Triangulation> carve(tr, true);
+  std::vector<const void*> modified;
+  const Outcome why = carve_and_reinsert(carve, tr, bad, stack, flip_log, modified, stats);
+  if(why != Outcome::ok)
+    return why;
   if(!lawson_flip(tr, stack, max_flips, stats.flips, touched, parallel))
     return Outcome::flip_budget_exhausted;
   // The predicted faces modified: those flipped (before the carve or after it) that were

@@ -6,10 +6,11 @@
 // - flip_edges_while() and lawson_flip(): Lawson's algorithm (stage 4 of the pipeline,
 //   repair), seeded only with the edges certification found not locally Delaunay;
 //   delaunay_from_prediction runs it on the triangulation it exported, make_delaunay on the
-//   caller's own, certification (tds_certify.h) on the fly;
+//   caller's own, certification (tds_certify.h) on the fly; on TBB's threads, in the cells of
+//   a grid (Flip_cells), lawson_flip_in_cells();
 // - flip_around_new_vertex(): the flips of one incremental insertion (insertion.h);
 // - untangle_by_flips(): the flips that undo a vertex crossing an edge (make_delaunay after
-//   moves, before any carving);
+//   moves, before any carving), on TBB's threads in the same cells;
 // - convexify_hull(): flips of infinite edges that make a hull convex again;
 // - undo_flip() and undo_flips(): the log that lets make_delaunay restore the caller's
 //   triangulation exactly.
@@ -192,6 +193,53 @@ bool flip_edges_while(Triangulation& tr,
   return true;
 }
 
+// The cells of the tasks that flip on TBB's threads (lawson_flip_in_cells(),
+// untangle_by_flips()): a grid of side x side cells over the box of the finite vertices of a
+// sample of the faces the tasks start from (points outside it fall in the border cells).
+// Which cell a point is in only steers (Grid_axis: no overflow, no NaN): the tasks' results
+// do not depend on it.
+struct Flip_cells
+{
+  std::size_t side = 0, cells = 0;
+  Grid_axis column, row;
+
+  template <class Point>
+  std::size_t operator()(const Point& p) const
+  {
+    return row(CGAL::to_double(p.y())) * side + column(CGAL::to_double(p.x()));
+  }
+};
+
+// Flip_cells for the faces face_at(0..m-1), about `per_cell` of them a cell, 4 to 256 cells:
+// few enough that most flips are inside a cell, enough for TBB to balance the threads. False
+// when the sample has no finite vertex.
+template <class Vertex_handle, class FaceAt>
+bool make_flip_cells(std::size_t m, const FaceAt& face_at, Vertex_handle infinite, std::size_t per_cell,
+                     Flip_cells& out)
+{
+  const double inf = std::numeric_limits<double>::infinity();
+  Box box{inf, -inf, inf, -inf};
+  const std::size_t stride = (std::max)(std::size_t(1), m / 4096);
+  for(std::size_t k = 0; k < m; k += stride)
+    for(int v = 0; v < 3; ++v) {
+      const Vertex_handle u = face_at(k)->vertex(v);
+      if(u == infinite)
+        continue;
+      const double x = CGAL::to_double(u->point().x()), y = CGAL::to_double(u->point().y());
+      box.xmin = (std::min)(box.xmin, x);
+      box.xmax = (std::max)(box.xmax, x);
+      box.ymin = (std::min)(box.ymin, y);
+      box.ymax = (std::max)(box.ymax, y);
+    }
+  if(!(box.xmin <= box.xmax && box.ymin <= box.ymax))
+    return false;
+  out.side = (std::min)(std::size_t(16), (std::max)(std::size_t(2), std::size_t(std::sqrt(double(m) / double(per_cell)))));
+  out.cells = out.side * out.side;
+  out.column = Grid_axis(box.xmin, box.xmax, out.side);
+  out.row = Grid_axis(box.ymin, box.ymax, out.side);
+  return true;
+}
+
 // Lawson's algorithm: flips until every edge is locally Delaunay, or until `max_flips` flips
 // have been made (returns false then), starting from the candidate edges in `stack`.
 // `touched` receives both faces of every flip.
@@ -269,33 +317,11 @@ bool lawson_flip_in_cells(Triangulation& tr,
   const Vertex_handle infinite = tr.infinite_vertex();
   const std::size_t m = stack.size();
 
-  // The box of the finite vertices of a sample of the faces on the stack (points outside it
-  // fall in the cells at its border).
-  const double inf = std::numeric_limits<double>::infinity();
-  Box box{inf, -inf, inf, -inf};
-  const std::size_t stride = (std::max)(std::size_t(1), m / 4096);
-  for(std::size_t k = 0; k < m; k += stride)
-    for(int v = 0; v < 3; ++v) {
-      const Vertex_handle u = stack[k].first->vertex(v);
-      if(u == infinite)
-        continue;
-      const double x = CGAL::to_double(u->point().x()), y = CGAL::to_double(u->point().y());
-      box.xmin = (std::min)(box.xmin, x);
-      box.xmax = (std::max)(box.xmax, x);
-      box.ymin = (std::min)(box.ymin, y);
-      box.ymax = (std::max)(box.ymax, y);
-    }
-  if(!(box.xmin <= box.xmax && box.ymin <= box.ymax))
+  // Cells of about 1024 candidate edges.
+  Flip_cells cell_of;
+  if(!make_flip_cells(m, [&](std::size_t k) { return stack[k].first; }, infinite, 1024, cell_of))
     return lawson_flip(tr, stack, max_flips, flips, touched);
-  // Cells of about 1024 candidate edges, 4 to 256 of them: few enough that most flips are
-  // inside a cell, enough for TBB to balance the threads. Which cell a point is in only
-  // steers (Grid_axis: no overflow, no NaN); any assignment gives the same triangulation.
-  const std::size_t side = (std::min)(std::size_t(16), (std::max)(std::size_t(2), std::size_t(std::sqrt(double(m) / 1024))));
-  const std::size_t cells = side * side;
-  const Grid_axis column(box.xmin, box.xmax, side), row(box.ymin, box.ymax, side);
-  auto cell_of = [&](const auto& p) {
-    return row(CGAL::to_double(p.y())) * side + column(CGAL::to_double(p.x()));
-  };
+  const std::size_t cells = cell_of.cells;
   // Each candidate edge goes to the cell of its face's first vertex, or, if the face is
   // infinite, to the last bucket, `cells` (hull edges are never flipped). Its task keeps it
   // if the face's other vertices and the vertex across the edge are in the cell too, and
@@ -307,6 +333,13 @@ bool lawson_flip_in_cells(Triangulation& tr,
   counting_sort(
       m, cells + 1,
       [&](std::size_t k) {
+#if defined(__GNUC__)
+        // Called in order within a block: the face, then its first vertex, fetched ahead.
+        if(k + 16 < m)
+          __builtin_prefetch(stack[k + 16].first.operator->());
+        if(k + 8 < m)
+          __builtin_prefetch(stack[k + 8].first->vertex(0).operator->());
+#endif
         const Face_handle f = stack[k].first;
         return f->has_vertex(infinite) ? cells : cell_of(f->vertex(0)->point());
       },
@@ -430,30 +463,68 @@ void flip_around_new_vertex(Triangulation& tr, typename Triangulation::Vertex_ha
 // `bad`. The flips are combinatorial: nothing here assumes the faces tile the plane; the
 // certificate stays the one at the top of this file (every face ccw, hull convex and wound
 // once). Each flip made is logged, so undo_flips() can restore `tr`.
-template <class Triangulation>
-void untangle_by_flips(Triangulation& tr, std::vector<typename Triangulation::Face_handle>& bad,
-                       std::vector<std::pair<typename Triangulation::Face_handle, int>>& stack,
-                       Flip_log<Triangulation>& log,
-                       std::vector<typename Triangulation::Face_handle>& touched)
+//
+// With `parallel` (CGAL::Parallel_tag) and at least min_faces_to_untangle_in_cells bad faces,
+// the faces are untangled in cells on TBB's threads first, as Lawson's flips are
+// (lawson_flip_in_cells()): a cell's task takes a bad face when its three vertices and the
+// vertices across its finite edges are in the cell, and leaves the others to a final pass in
+// order. The argument of lawson_flip_in_cells() says why the tasks do not race (the test for
+// an existing edge (a, d) turns around a, in the cell, through the faces' slots across edges
+// at a, which no other task writes). The logs of the cells are joined in cell order: flips of
+// different cells write disjoint slots, so undoing them latest first restores `tr` as well.
+// Only which faces stay bad, and so how much is carved, may depend on the order; the
+// triangulation make_delaunay() returns does not.
+constexpr std::size_t min_faces_to_untangle_in_cells = 64;
+
+// The untangling of the faces bad[first, last), as described above, by one task (`alone`:
+// no other task runs): a face is taken when in_scope() holds for its vertices and those
+// across its finite edges, and appended to `deferred` otherwise.
+template <class Triangulation, class InScope>
+void untangle_faces(Triangulation& tr, const std::vector<typename Triangulation::Face_handle>& bad,
+                    std::size_t first, std::size_t last, bool alone, const InScope& in_scope,
+                    std::vector<typename Triangulation::Face_handle>& deferred,
+                    std::vector<std::pair<typename Triangulation::Face_handle, int>>& stack,
+                    Flip_log<Triangulation>& log, std::vector<typename Triangulation::Face_handle>& touched)
 {
   using Face_handle = typename Triangulation::Face_handle;
   auto orientation = tr.geom_traits().orientation_2_object();
   auto& tds = tr.tds();
   const auto infinite = tr.infinite_vertex();
-  auto is_ccw = [&](Face_handle f) {
-    return orientation(f->vertex(0)->point(), f->vertex(1)->point(), f->vertex(2)->point()) == LEFT_TURN;
-  };
-  for(std::size_t k = 0; k < bad.size(); ++k) {
+  for(std::size_t k = first; k < last; ++k) {
     const Face_handle f = bad[k];
 #if defined(__GNUC__)
-    if(k + 8 < bad.size()) // the faces are far apart: fetch the neighbourhood of one ahead
+    // The faces are far apart: fetch the neighbourhood of one ahead. In a cell, its neighbour
+    // slots are read only once its vertices are known to be in the cell (else they may be
+    // another task's): the vertices 8 ahead, the neighbours 4 ahead.
+    if(k + 8 < last)
       for(int i = 0; i < 3; ++i) {
         __builtin_prefetch(bad[k + 8]->vertex(i).operator->());
-        __builtin_prefetch(bad[k + 8]->neighbor(i).operator->());
+        if(alone)
+          __builtin_prefetch(bad[k + 8]->neighbor(i).operator->());
       }
+    if(!alone && k + 4 < last) {
+      const Face_handle h = bad[k + 4];
+      if(in_scope(h->vertex(0)) && in_scope(h->vertex(1)) && in_scope(h->vertex(2)))
+        for(int i = 0; i < 3; ++i)
+          __builtin_prefetch(h->neighbor(i).operator->());
+    }
 #endif
-    if(is_ccw(f))
+    if(!in_scope(f->vertex(0)) || !in_scope(f->vertex(1)) || !in_scope(f->vertex(2))) {
+      deferred.push_back(f);
+      continue;
+    }
+    const auto& p0 = f->vertex(0)->point();
+    if(orientation(p0, f->vertex(1)->point(), f->vertex(2)->point()) == LEFT_TURN)
       continue; // made ccw by an earlier flip
+    bool across_in_scope = true;
+    for(int i = 0; i < 3 && across_in_scope; ++i) {
+      const Face_handle g = f->neighbor(i);
+      across_in_scope = g->has_vertex(infinite) || in_scope(g->vertex(tds.mirror_index(f, i)));
+    }
+    if(!across_in_scope) {
+      deferred.push_back(f);
+      continue;
+    }
     for(int i = 0; i < 3; ++i) {
       const Face_handle g = f->neighbor(i);
       if(g->has_vertex(infinite))
@@ -467,14 +538,66 @@ void untangle_by_flips(Triangulation& tr, std::vector<typename Triangulation::Fa
       log.emplace_back(f, i);
       touched.push_back(f);
       touched.push_back(g);
-      for(int k = 0; k < 3; ++k) {
-        stack.emplace_back(f, k);
-        stack.emplace_back(g, k);
+      for(int j = 0; j < 3; ++j) {
+        stack.emplace_back(f, j);
+        stack.emplace_back(g, j);
       }
       break;
     }
   }
-  bad.erase(std::remove_if(bad.begin(), bad.end(), is_ccw), bad.end());
+}
+
+template <class Triangulation>
+void untangle_by_flips(Triangulation& tr, std::vector<typename Triangulation::Face_handle>& bad,
+                       std::vector<std::pair<typename Triangulation::Face_handle, int>>& stack,
+                       Flip_log<Triangulation>& log,
+                       std::vector<typename Triangulation::Face_handle>& touched, bool parallel = false)
+{
+  using Face_handle = typename Triangulation::Face_handle;
+  using Vertex_handle = typename Triangulation::Vertex_handle;
+  using Edge = std::pair<Face_handle, int>;
+  const auto everywhere = [](Vertex_handle) { return true; };
+  std::vector<Face_handle> deferred;
+  Flip_cells cell_of;
+  if(parallel && bad.size() >= min_faces_to_untangle_in_cells &&
+     make_flip_cells(bad.size(), [&](std::size_t k) { return bad[k]; }, tr.infinite_vertex(), 256, cell_of)) {
+    // Bad faces are finite: each goes to the cell of its first vertex.
+    std::vector<Face_handle> sorted(bad.size());
+    std::vector<std::uint32_t> end;
+    counting_sort(
+        bad.size(), cell_of.cells, [&](std::size_t k) { return cell_of(bad[k]->vertex(0)->point()); },
+        [&](std::size_t k, std::size_t position) { sorted[position] = bad[k]; }, true, end);
+    struct Cell_output
+    {
+      std::vector<Face_handle> deferred, touched;
+      std::vector<Edge> stack;
+      Flip_log<Triangulation> log;
+    };
+    std::vector<Cell_output> out(cell_of.cells);
+    for_each_block(true, cell_of.cells, [&](std::size_t cell) {
+      Cell_output& o = out[cell];
+      untangle_faces(tr, sorted, cell == 0 ? 0 : end[cell - 1], end[cell], false,
+                     [&](Vertex_handle v) { return v != tr.infinite_vertex() && cell_of(v->point()) == cell; },
+                     o.deferred, o.stack, o.log, o.touched);
+    });
+    for(Cell_output& o : out) {
+      deferred.insert(deferred.end(), o.deferred.begin(), o.deferred.end());
+      touched.insert(touched.end(), o.touched.begin(), o.touched.end());
+      stack.insert(stack.end(), o.stack.begin(), o.stack.end());
+      log.insert(log.end(), o.log.begin(), o.log.end());
+    }
+    std::vector<Face_handle> unused;
+    untangle_faces(tr, deferred, 0, deferred.size(), true, everywhere, unused, stack, log, touched);
+  } else {
+    untangle_faces(tr, bad, 0, bad.size(), true, everywhere, deferred, stack, log, touched);
+  }
+  auto orientation = tr.geom_traits().orientation_2_object();
+  bad.erase(std::remove_if(bad.begin(), bad.end(),
+                           [&](Face_handle f) {
+                             return orientation(f->vertex(0)->point(), f->vertex(1)->point(),
+                                                f->vertex(2)->point()) == LEFT_TURN;
+                           }),
+            bad.end());
   std::sort(bad.begin(), bad.end());
   bad.erase(std::unique(bad.begin(), bad.end()), bad.end());
 }

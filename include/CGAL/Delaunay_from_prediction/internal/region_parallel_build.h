@@ -40,6 +40,7 @@
 #include <CGAL/Delaunay_from_prediction/internal/vertex_info.h>
 
 #include <CGAL/Delaunay_triangulation_2.h>
+#include <CGAL/Real_timer.h>
 #include <CGAL/Triangulation_data_structure_2.h>
 #include <CGAL/Triangulation_face_base_with_info_2.h>
 #include <CGAL/Triangulation_vertex_base_with_info_2.h>
@@ -176,6 +177,10 @@ struct Region_build_report
   std::size_t seam_points = 0;   // points triangulated again for the seams
   std::size_t walls = 0;         // edges between kept faces and seam faces
   std::size_t walls_failing = 0; // of them, not locally Delaunay (repaired by flips)
+  // Wall-clock seconds of the stages, for the benchmarks: the split into blocks, the blocks'
+  // triangulations (on TBB's threads), DT(seam vertices) with the walls and the seam faces
+  // (one thread), and the join (splice, checks, wall flips).
+  double split_seconds = 0, blocks_seconds = 0, seams_seconds = 0, join_seconds = 0;
 };
 
 // Builds DT(points[0, n)) into `dt` (no vertex yet) by regions (see the file's comment):
@@ -212,6 +217,14 @@ bool build_by_regions(DT& dt, PointIterator points, std::size_t n, Statistics& s
   if(blocks < 2 || n < 3 || n >= std::size_t(std::uint32_t(-1)))
     return false;
   const Gt& gt = dt.geom_traits();
+  Real_timer clock;
+  clock.start();
+  double stage_start = 0, stage_seconds[4] = {0, 0, 0, 0};
+  auto end_stage = [&](int stage) {
+    const double now = clock.time();
+    stage_seconds[stage] = now - stage_start;
+    stage_start = now;
+  };
   int depth = 0;
   while((std::size_t(1) << depth) < blocks)
     ++depth;
@@ -233,6 +246,7 @@ bool build_by_regions(DT& dt, PointIterator points, std::size_t n, Statistics& s
   split_into_regions(order, xy, all,
                      {box.xmin * scale, box.xmax * scale, box.ymin * scale, box.ymax * scale}, depth, region, parallel);
   std::vector<std::array<double, 2>>().swap(xy);
+  end_stage(0);
 
   // Each block, on a thread: its triangulation, built in a triangulation of the caller's type
   // whose vertices and kept faces become the result's (their containers spliced at the end).
@@ -319,6 +333,7 @@ bool build_by_regions(DT& dt, PointIterator points, std::size_t n, Statistics& s
     btds.delete_vertex(block_infinite);
     o.kept_faces = btds.faces().size();
   });
+  end_stage(1);
 
   // The seams: DT(seam vertices); a seam point merged there with another block's vertex at the
   // same point is a duplicate, its vertex dropped.
@@ -496,6 +511,7 @@ bool build_by_regions(DT& dt, PointIterator points, std::size_t n, Statistics& s
         return false; // a seam vertex in no face, or a dropped one in a face
   }
 
+  end_stage(2);
   // Spliced into the triangulation, checked, the failing walls flipped.
   auto& tds = dt.tds();
   tds.faces().clear(); // the constructor's face of dimension -1
@@ -519,7 +535,12 @@ bool build_by_regions(DT& dt, PointIterator points, std::size_t n, Statistics& s
   }
   stats.points_reinserted += n;
   stats.duplicate_points += duplicates;
+  end_stage(3);
   if(report != nullptr) {
+    report->split_seconds = stage_seconds[0];
+    report->blocks_seconds = stage_seconds[1];
+    report->seams_seconds = stage_seconds[2];
+    report->join_seconds = stage_seconds[3];
     report->blocks = region.size();
     report->kept_faces = kept_faces;
     report->seam_points = seam_points;
