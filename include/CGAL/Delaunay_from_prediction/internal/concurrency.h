@@ -68,6 +68,15 @@ void for_each_block(bool parallel, std::size_t blocks, const Body& body)
     body(b);
 }
 
+// Calls body(first, last) for the ranges [first, last) that cut [0, n) into pieces of `size`
+// items (the last one shorter), through for_each_block().
+template <class Body>
+void for_each_range(bool parallel, std::size_t n, std::size_t size, const Body& body)
+{
+  for_each_block(parallel, (n + size - 1) / size,
+                 [&](std::size_t b) { body(b * size, (std::min)(n, (b + 1) * size)); });
+}
+
 // The number of threads for_each_block() may use: TBB's limit in the current arena (and
 // global_control), 1 without TBB.
 inline std::size_t available_threads()

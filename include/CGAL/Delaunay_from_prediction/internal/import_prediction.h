@@ -260,8 +260,8 @@ public:
     };
     if(order.renumbered()) {
       std::vector<Point> sorted_points(n);
-      for_each_block(parallel, (n + 65535) / 65536, [&](std::size_t b) {
-        for(std::size_t v = 65536 * b, end = (std::min)(n, v + 65536); v < end; ++v)
+      for_each_range(parallel, n, 65536, [&](std::size_t first, std::size_t last) {
+        for(std::size_t v = first; v < last; ++v)
           sorted_points[v] = points[order.old_index(std::uint32_t(v))];
       });
       import(sorted_points.cbegin());
@@ -482,8 +482,8 @@ private:
     // 1. The first chunk to use each vertex.
     constexpr std::uint32_t nobody = (std::numeric_limits<std::uint32_t>::max)(), has_face = nobody - 1;
     std::unique_ptr<std::atomic<std::uint32_t>[]> owner(new std::atomic<std::uint32_t>[n_]);
-    for_each_block(true, (n_ + 65535) / 65536, [&](std::size_t b) {
-      for(std::size_t v = 65536 * b, end = (std::min)(n_, v + 65536); v < end; ++v)
+    for_each_range(true, n_, 65536, [&](std::size_t first, std::size_t last) {
+      for(std::size_t v = first; v < last; ++v)
         owner[v].store(nobody, std::memory_order_relaxed);
     });
     for_each_chunk([&](std::size_t c, std::size_t first, std::size_t last) {

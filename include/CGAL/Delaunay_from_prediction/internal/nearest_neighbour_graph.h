@@ -228,8 +228,8 @@ inline void nearest_neighbour_graph_in_frame(const double* xy, std::size_t m, st
   }
   // Blocks of 4096 cells (about 8192 points).
   constexpr std::size_t block_cells = 4096;
-  for_each_block(parallel, (cells + block_cells - 1) / block_cells, [&](std::size_t block) {
-    for(std::size_t c = block * block_cells; c < (std::min)(cells, (block + 1) * block_cells); ++c) {
+  for_each_range(parallel, cells, block_cells, [&](std::size_t first, std::size_t last) {
+    for(std::size_t c = first; c < last; ++c) {
       const long cx = long(c % side_x), cy = long(c / side_x);
       const double cell_x0 = xmin + double(cx) * cell_width, cell_y0 = ymin + double(cy) * cell_height;
       // The 3 x 3 cells around (fewer at the grid's sides): three runs of the grid order.

@@ -233,8 +233,8 @@ bool build_by_regions(DT& dt, PointIterator points, std::size_t n, Statistics& s
   const Box box = bounding_box(n, [&](std::size_t i) -> decltype(points[0]) { return points[i]; });
   const double scale = unit_scale(box);
   std::vector<std::array<double, 2>> xy(n);
-  for_each_block(parallel, (n + 65535) / 65536, [&](std::size_t b) {
-    for(std::size_t i = b * 65536, end = (std::min)(n, i + 65536); i < end; ++i)
+  for_each_range(parallel, n, 65536, [&](std::size_t first, std::size_t last) {
+    for(std::size_t i = first; i < last; ++i)
       xy[i] = {CGAL::to_double(points[i].x()) * scale, CGAL::to_double(points[i].y()) * scale};
   });
   std::vector<std::uint32_t> order(n);

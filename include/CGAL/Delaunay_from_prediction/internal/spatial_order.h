@@ -295,17 +295,17 @@ private:
     old_of_.resize(n);
     std::vector<std::uint32_t> new_of(n);
     constexpr std::size_t block = 1 << 16;
-    for_each_block(parallel, (n + block - 1) / block, [&](std::size_t b) {
-      for(std::size_t i = b * block, end = (std::min)(n, i + block); i < end; ++i)
+    for_each_range(parallel, n, block, [&](std::size_t first, std::size_t last) {
+      for(std::size_t i = first; i < last; ++i)
         old_of_[i] = std::uint32_t(i);
     });
     sort_along_grid(old_of_, [&](std::uint32_t i) -> decltype(points[0]) { return points[i]; }, false, parallel);
-    for_each_block(parallel, (n + block - 1) / block, [&](std::size_t b) {
-      for(std::size_t v = b * block, end = (std::min)(n, v + block); v < end; ++v)
+    for_each_range(parallel, n, block, [&](std::size_t first, std::size_t last) {
+      for(std::size_t v = first; v < last; ++v)
         new_of[old_of_[v]] = std::uint32_t(v);
     });
-    for_each_block(parallel, (triples.size() + block - 1) / block, [&](std::size_t b) {
-      for(std::size_t k = b * block, end = (std::min)(triples.size(), k + block); k < end; ++k)
+    for_each_range(parallel, triples.size(), block, [&](std::size_t first, std::size_t last) {
+      for(std::size_t k = first; k < last; ++k)
         triples[k] = new_of[triples[k]];
     });
   }
