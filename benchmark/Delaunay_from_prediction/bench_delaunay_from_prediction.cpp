@@ -209,22 +209,6 @@ std::size_t count_duplicates(const std::vector<Point>& points)
   return std::size_t(xy.end() - std::unique(xy.begin(), xy.end()));
 }
 
-// Flips k random interior edges of `t` whose quadrilateral is strictly convex. Returns the
-// number of flips made (k unless the triangulation has too few flippable edges).
-std::size_t random_flips(DTI& t, std::size_t k, Rng& rng)
-{
-  const std::vector<DTI::Face_handle> faces = finite_face_handles(t);
-  if(faces.empty())
-    return 0;
-  std::size_t done = 0, attempts = 0;
-  const std::size_t max_attempts = 100 * k + 1000;
-  const auto any = [](const Point&, const Point&, const Point&, const Point&) { return true; };
-  while(done < k && attempts++ < max_attempts)
-    if(try_random_flip(t, faces, rng, any))
-      ++done;
-  return done;
-}
-
 std::vector<Face> random_triples(std::size_t n, std::size_t count, Rng& rng)
 {
   std::vector<Face> faces(count);

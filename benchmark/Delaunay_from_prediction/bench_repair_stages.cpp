@@ -122,7 +122,7 @@ int main(int argc, char** argv)
   std::printf("# bench_repair_stages, %s, %s, malloc policy %s, n = %zu uniform, Gaussian moves, %d threads, "
               "medians of %d\n",
               local_date_time().c_str(), build_description().c_str(), keep ? "keep" : "default", n, threads, reps);
-  std::printf("%-7s %-10s |", "sigma", "mode");
+  std::printf("%-9s %-10s |", "sigma", "mode");
   for(const char* name : stage_names)
     std::printf(" %9s", name);
   std::printf(" | %s\n", "check");
@@ -168,25 +168,12 @@ int main(int argc, char** argv)
           seconds[mode][k].push_back(stage[k]);
       }
     all_ok = all_ok && ok;
-    for(int mode = 0; mode < 2; ++mode) {
-      std::printf("%-7g %-10s |", sigma, mode == 0 ? "sequential" : "parallel");
-      for(int k = 0; k < stage_count; ++k)
-        if(local || k == stage_count - 1)
-          std::printf(" %9.4f", median(seconds[mode][k]));
-        else
-          std::printf(" %9s", "-");
-      if(local)
-        std::printf(" | %s, %zu faces not ccw\n", ok ? "ok" : "DIFFERENT", not_ccw);
-      else
-        std::printf(" | %s\n", ok ? "ok (no local repair: the call rebuilds)" : "DIFFERENT");
-    }
-    std::printf("%-7g %-10s |", sigma, "seq/par");
-    for(int k = 0; k < stage_count; ++k)
-      if(local || k == stage_count - 1)
-        std::printf(" %9.2f", median(seconds[0][k]) / median(seconds[1][k]));
-      else
-        std::printf(" %9s", "-");
-    std::printf(" |\n");
+    char label[32];
+    std::snprintf(label, sizeof label, "%g", sigma);
+    const std::string check = !ok      ? "DIFFERENT"
+                              : local ? "ok, " + std::to_string(not_ccw) + " faces not ccw"
+                                      : "ok (no local repair: the call rebuilds)";
+    print_stage_rows(label, seconds[0], seconds[1], stage_count, local, check);
   }
   std::printf("(seconds, medians; certify + untangle + carve + flips are the stages called one by one, call\n"
               " the whole make_delaunay() on a fresh copy: sequentially it flips during certification, so\n"

@@ -266,6 +266,22 @@ bool try_random_flip(DTI& t, const std::vector<DTI::Face_handle>& faces, Rng& rn
   return true;
 }
 
+// Flips k random interior edges of `t` whose quadrilateral is strictly convex. Returns the
+// number of flips made (k unless the triangulation has too few flippable edges).
+inline std::size_t random_flips(DTI& t, std::size_t k, Rng& rng)
+{
+  const std::vector<DTI::Face_handle> faces = finite_face_handles(t);
+  if(faces.empty())
+    return 0;
+  std::size_t done = 0, attempts = 0;
+  const std::size_t max_attempts = 100 * k + 1000;
+  const auto any = [](const Point&, const Point&, const Point&, const Point&) { return true; };
+  while(done < k && attempts++ < max_attempts)
+    if(try_random_flip(t, faces, rng, any))
+      ++done;
+  return done;
+}
+
 // ---------------------------------------------------------------------------------------------
 // Checks: counts and an order-independent hash of the set of finite faces, each face the
 // lexicographically sorted triple of its point coordinates.
@@ -355,6 +371,33 @@ inline double median(std::vector<double> v)
   std::sort(v.begin(), v.end());
   const std::size_t m = v.size() / 2;
   return v.size() % 2 ? v[m] : 0.5 * (v[m - 1] + v[m]);
+}
+
+// The rows of a stage-by-stage ablation (bench_import_stages, bench_repair_stages): the
+// median seconds of each stage in the sequential and in the parallel mode, then their ratio.
+// Where `staged` is false only the last stage (the whole call) has times. `check` ends the two
+// rows of times.
+inline void print_stage_rows(const std::string& label, const std::vector<double>* sequential,
+                             const std::vector<double>* parallel, int stages, bool staged, const std::string& check)
+{
+  const std::vector<double>* seconds[2] = {sequential, parallel};
+  const char* const modes[3] = {"sequential", "parallel", "seq/par"};
+  for(int row = 0; row < 3; ++row) {
+    std::printf("%-9s %-10s |", label.c_str(), modes[row]);
+    for(int k = 0; k < stages; ++k) {
+      const bool shown = staged || k == stages - 1;
+      if(shown && row < 2)
+        std::printf(" %9.4f", median(seconds[row][k]));
+      else if(shown && median(parallel[k]) > 0)
+        std::printf(" %9.2f", median(sequential[k]) / median(parallel[k]));
+      else
+        std::printf(" %9s", "-");
+    }
+    if(row < 2)
+      std::printf(" | %s\n", check.c_str());
+    else
+      std::printf(" |\n");
+  }
 }
 
 // ---------------------------------------------------------------------------------------------

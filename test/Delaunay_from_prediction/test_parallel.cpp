@@ -252,7 +252,8 @@ void reordering_is_the_same(CGAL::Random& rng)
       std::fill(sorted.begin(), sorted.end(), 0);
       DFP::internal::counting_sort(
           key.size(), buckets, [&](std::size_t k) { return key[k]; },
-          [&](std::size_t k, std::size_t position) { sorted[position] = std::uint32_t(k); }, parallel, end);
+          [&](std::size_t k) { return std::uint32_t(k); },
+          [&](std::size_t position, std::uint32_t k) { sorted[position] = k; }, parallel, end);
       DFP_CHECK(sorted == expected);
       DFP_CHECK(end == expected_end);
     }

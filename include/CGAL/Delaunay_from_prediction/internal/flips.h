@@ -343,7 +343,8 @@ bool lawson_flip_in_cells(Triangulation& tr,
         const Face_handle f = stack[k].first;
         return f->has_vertex(infinite) ? cells : cell_of(f->vertex(0)->point());
       },
-      [&](std::size_t k, std::size_t position) { sorted[position] = stack[k]; }, true, end);
+      [&](std::size_t k) { return stack[k]; }, [&](std::size_t position, const Edge& e) { sorted[position] = e; },
+      true, end);
 
   // Each task keeps its flips, its deferred edges and the faces it touched to itself until
   // it ends (no false sharing), then moves them to its cell's slot.
@@ -566,7 +567,8 @@ void untangle_by_flips(Triangulation& tr, std::vector<typename Triangulation::Fa
     std::vector<std::uint32_t> end;
     counting_sort(
         bad.size(), cell_of.cells, [&](std::size_t k) { return cell_of(bad[k]->vertex(0)->point()); },
-        [&](std::size_t k, std::size_t position) { sorted[position] = bad[k]; }, true, end);
+        [&](std::size_t k) { return bad[k]; },
+        [&](std::size_t position, Face_handle f) { sorted[position] = f; }, true, end);
     struct Cell_output
     {
       std::vector<Face_handle> deferred, touched;

@@ -27,6 +27,7 @@
 #include <CGAL/Delaunay_from_prediction/internal/predicates.h>
 #include <CGAL/Delaunay_from_prediction/internal/spatial_order.h>
 #include <CGAL/Delaunay_from_prediction/internal/vertex_info.h>
+#include <CGAL/Real_timer.h>
 
 #include <algorithm>
 #include <atomic>
@@ -246,17 +247,28 @@ public:
   //
   // With `parallel`, the faces are oriented, paired and tested in chunks on TBB's threads
   // (build_in_chunks()); the certificate is the same.
+  //
+  // `seconds`, if given, receives the wall-clock seconds of the two stages, for the benchmarks:
+  // [0] the spatial reordering with the copy of the points, [1] the import and certificate.
   template <class PointIterator>
   static void run(Triangulation& tr, PointIterator points, std::size_t n, std::vector<std::uint32_t>& triples,
-                  Imported_prediction<Triangulation>& out, bool tolerant, bool parallel = false)
+                  Imported_prediction<Triangulation>& out, bool tolerant, bool parallel = false,
+                  double* seconds = nullptr)
   {
     Prediction_importer importer(tr, n, triples.size() / 3, out, tolerant);
+    Real_timer clock;
+    clock.start();
     Spatial_order order;
     order.compute(tr.geom_traits(), points, n, triples, parallel);
     out.reordered = order.renumbered() || order.faces_sorted();
     auto import = [&](auto sorted_points) {
+      const double ordered = clock.time();
       if(!parallel || importer.number_of_faces_ < 2 * min_chunk || !importer.build_in_chunks(sorted_points, triples, order))
         importer.build(sorted_points, triples, order);
+      if(seconds) {
+        seconds[0] = ordered;
+        seconds[1] = clock.time() - ordered;
+      }
     };
     if(order.renumbered()) {
       std::vector<Point> sorted_points(n);
@@ -444,20 +456,20 @@ private:
   static constexpr std::size_t min_chunk = 32;
 
   // build() in parallel, on chunks of consecutive faces (a 16th of them, at least
-  // min_chunk). Three passes over the chunks on TBB's threads:
-  //  1. each vertex is given to the first chunk that uses it;
-  //  2. each chunk creates its vertices, in the order of the faces, in a Compact_container of
-  //     its own (CGAL's containers are not thread-safe);
+  // min_chunk, so at most 16 chunks). Three passes over the chunks on TBB's threads:
+  //  1. each chunk marks the vertices it uses in a bitmap of its own;
+  //  2. each chunk creates, in index order, the vertices it uses and no earlier chunk does,
+  //     in a Compact_container of its own (CGAL's containers are not thread-safe);
   //  3. each chunk orients its faces and creates them in a container of its own, pairs their
   //     half-edges through its own Open_halfedges, links and tests the pairs; it writes only
   //     its own faces and vertices.
-  // Then the containers are spliced, in chunk order, into the triangulation's
-  // (Compact_container::merge(), constant time per block), so that vertices and faces come
-  // in the order build() creates them, and the half-edges each chunk left open (its
-  // frontiers with the chunks before and after, about sqrt(n) each for faces in band order,
-  // and the hull) are paired sequentially in chunk order. The pairing is exact, so the faces,
-  // their links and the failing edges are those of build(); only the order of the failing
-  // edges differs.
+  // Then the half-edges each chunk left open (its frontiers with the chunks before and after,
+  // about sqrt(n) each for faces in band order, and the hull) are paired sequentially in chunk
+  // order, and the containers spliced, in chunk order, into the triangulation's
+  // (Compact_container::merge(), constant time per block), so that faces come in the order
+  // build() creates them (vertices in chunk order, by index within a chunk); the seams are
+  // linked and tested last. The pairing is exact, so the faces, their links and the failing
+  // edges are those of build(); only the order of the failing edges differs.
   //
   // A face the tolerant import would leave out (flat, or on the same side of an edge as
   // another) stops every chunk and false is returned, the triangulation untouched: build()
@@ -479,33 +491,37 @@ private:
       });
     };
 
-    // 1. The first chunk to use each vertex.
-    constexpr std::uint32_t nobody = (std::numeric_limits<std::uint32_t>::max)(), has_face = nobody - 1;
-    std::unique_ptr<std::atomic<std::uint32_t>[]> owner(new std::atomic<std::uint32_t>[n_]);
-    for_each_range(true, n_, 65536, [&](std::size_t first, std::size_t last) {
-      for(std::size_t v = first; v < last; ++v)
-        owner[v].store(nobody, std::memory_order_relaxed);
-    });
+    // 1. The vertices each chunk uses.
+    const std::size_t words = (n_ + 63) / 64;
+    std::vector<std::uint64_t> uses(chunks * words, 0);
     for_each_chunk([&](std::size_t c, std::size_t first, std::size_t last) {
-      for(const std::uint32_t *t = triples.data() + 3 * first, *end = triples.data() + 3 * last; t != end; ++t) {
-        std::uint32_t seen = owner[*t].load(std::memory_order_relaxed);
-        while(c < seen && !owner[*t].compare_exchange_weak(seen, std::uint32_t(c), std::memory_order_relaxed)) {
+      std::uint64_t* mine = uses.data() + c * words;
+      for(const std::uint32_t *t = triples.data() + 3 * first, *end = triples.data() + 3 * last; t != end; ++t)
+        mine[*t >> 6] |= std::uint64_t(1) << (*t & 63);
+    });
+
+    // 2. The vertices, each made by the first chunk that uses it (`owner`).
+    std::vector<Vertex_handle> vertex_of(n_);
+    std::vector<Vertex_range> vertices(chunks);
+    std::vector<std::uint8_t> owner(n_); // chunks <= 16
+    for_each_chunk([&](std::size_t c, std::size_t, std::size_t) {
+      for(std::size_t w = 0; w < words; ++w) {
+        std::uint64_t own = uses[c * words + w];
+        for(std::size_t earlier = 0; own != 0 && earlier < c; ++earlier)
+          own &= ~uses[earlier * words + w];
+        for(std::size_t bit = 0; own != 0; ++bit, own >>= 1) {
+          if((own & 1) == 0)
+            continue;
+          const std::size_t v = 64 * w + bit;
+          const Vertex_handle h = vertices[c].emplace();
+          h->set_point(points[v]);
+          set_index_info(h, order.old_index(std::uint32_t(v)));
+          vertex_of[v] = h;
+          owner[v] = std::uint8_t(c);
         }
       }
     });
-
-    // 2. The vertices.
-    std::vector<Vertex_handle> vertex_of(n_);
-    std::vector<Vertex_range> vertices(chunks);
-    for_each_chunk([&](std::size_t c, std::size_t first, std::size_t last) {
-      for(const std::uint32_t *t = triples.data() + 3 * first, *end = triples.data() + 3 * last; t != end; ++t)
-        if(owner[*t].load(std::memory_order_relaxed) == c && vertex_of[*t] == Vertex_handle()) {
-          const Vertex_handle v = vertices[c].emplace();
-          v->set_point(points[*t]);
-          set_index_info(v, order.old_index(*t));
-          vertex_of[*t] = v;
-        }
-    });
+    std::vector<std::uint64_t>().swap(uses);
 
     // 3. The faces, their pairs and tests.
     constexpr int go_on = -1, face_left_out = -2; // why the chunks stop: not, or an Outcome
@@ -549,13 +565,10 @@ private:
         if(o == NEGATIVE)
           std::swap(v[1], v[2]);
         const Face_handle f = created.emplace(vertex_of[v[0]], vertex_of[v[1]], vertex_of[v[2]]);
-        // A vertex's first face in its chunk becomes its face(); `owner` then says so (no
-        // other chunk reads that value: each compares it with its own number).
+        // A vertex's first face in the chunk that made it becomes its face().
         for(int i = 0; i < 3; ++i)
-          if(owner[v[i]].load(std::memory_order_relaxed) == c) {
+          if(owner[v[i]] == c && vertex_of[v[i]]->face() == Face_handle())
             vertex_of[v[i]]->set_face(f);
-            owner[v[i]].store(has_face, std::memory_order_relaxed);
-          }
         for(int i = 0; i < 3; ++i) {
           const std::uint32_t tail = v[ccw(i)], head = v[cw(i)];
           std::uintptr_t twin = 0;
@@ -584,22 +597,16 @@ private:
       return true;
     }
 
-    // The containers spliced, then the seams paired in chunk order.
-    tds.faces().clear(); // the constructor's face of dimension -1
-    tds.set_dimension(2);
-    for(std::size_t c = 0; c < chunks; ++c) {
-      out_.vertices_used += vertices[c].size();
-      tds.vertices().merge(vertices[c]);
-      tds.faces().merge(face_range[c]);
-    }
+    // The seams paired in chunk order before anything is spliced, so that a pair on the same
+    // side leaves the triangulation as it was (the chunks' containers are released on return).
     std::size_t seams = 0;
     for(const Chunk& c : chunk)
       seams += c.open.size();
     Hash_map<std::uint64_t, std::uintptr_t> waiting(2 * seams + 2);
+    std::vector<std::pair<std::uintptr_t, std::uintptr_t>> seam_pairs; // (half-edge, twin) codes
+    seam_pairs.reserve(seams / 2);
+    std::vector<std::size_t> pairs_end(chunks); // chunk c's pairs end there
     for(std::size_t c = 0; c < chunks; ++c) {
-      out_.edges_tested += chunk[c].edges_tested;
-      out_.not_locally_delaunay.insert(out_.not_locally_delaunay.end(), chunk[c].not_locally_delaunay.begin(),
-                                       chunk[c].not_locally_delaunay.end());
       for(const Boundary_halfedge& h : chunk[c].open) {
         const std::uint64_t edge = std::uint64_t(h.tail) << 32 | h.head;
         std::uintptr_t twin = 0;
@@ -608,25 +615,37 @@ private:
           continue;
         }
         if(((twin ^ h.code) & tail_is_smaller_bit) == 0) {
-          if(!tolerant_) {
-            out_.failure = Outcome::overlapping_faces;
-            return true;
-          }
-          // Undone: build() starts again.
-          tds.faces().clear();
-          for(const Vertex_handle v : vertex_of)
-            if(v != Vertex_handle())
-              tds.delete_vertex(v);
-          out_.vertices_used = 0;
-          out_.edges_tested = 0;
-          out_.not_locally_delaunay.clear();
-          return false;
+          if(tolerant_)
+            return false; // build() starts again
+          out_.failure = Outcome::overlapping_faces;
+          return true;
         }
-        const Face_handle f = tds.faces().iterator_to(*reinterpret_cast<Face*>(h.code & ~flag_bits));
-        const int i = int(h.code & index_bits);
-        link_and_test(gt, f, i, tds.faces().iterator_to(*reinterpret_cast<Face*>(twin & ~flag_bits)),
-                      int(twin & index_bits), f->vertex(i)->point(), f->vertex(ccw(i))->point(),
-                      f->vertex(cw(i))->point(), out_.edges_tested, out_.not_locally_delaunay);
+        seam_pairs.emplace_back(h.code, twin);
+      }
+      pairs_end[c] = seam_pairs.size();
+    }
+
+    // The containers spliced, then the seams linked and tested, in the same order.
+    tds.faces().clear(); // the constructor's face of dimension -1
+    tds.set_dimension(2);
+    for(std::size_t c = 0; c < chunks; ++c) {
+      out_.vertices_used += vertices[c].size();
+      tds.vertices().merge(vertices[c]);
+      tds.faces().merge(face_range[c]);
+    }
+    auto face_of = [&](std::uintptr_t code) {
+      return tds.faces().iterator_to(*reinterpret_cast<Face*>(code & ~flag_bits));
+    };
+    for(std::size_t c = 0, k = 0; c < chunks; ++c) {
+      out_.edges_tested += chunk[c].edges_tested;
+      out_.not_locally_delaunay.insert(out_.not_locally_delaunay.end(), chunk[c].not_locally_delaunay.begin(),
+                                       chunk[c].not_locally_delaunay.end());
+      for(; k < pairs_end[c]; ++k) {
+        const Face_handle f = face_of(seam_pairs[k].first);
+        const int i = int(seam_pairs[k].first & index_bits);
+        link_and_test(gt, f, i, face_of(seam_pairs[k].second), int(seam_pairs[k].second & index_bits),
+                      f->vertex(i)->point(), f->vertex(ccw(i))->point(), f->vertex(cw(i))->point(),
+                      out_.edges_tested, out_.not_locally_delaunay);
       }
     }
     std::vector<Boundary_halfedge> boundary;

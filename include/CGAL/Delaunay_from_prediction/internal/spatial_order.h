@@ -25,6 +25,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <limits>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -53,17 +54,20 @@ constexpr std::uint64_t brio_seed = 0x5eed5eed5eedull;
 // resolve densities varying by 4^6 times the points per cell.
 constexpr int max_grid_depth = 6;
 
-// Stable counting sort of the items 0..m-1 by key_at(k) < buckets: calls place(k, position)
-// once for each item, positions in key order and, among equal keys, in item order, and sets
-// end[b] to the position after the last item of bucket b. With `parallel` (and m large enough
-// to pay), on TBB's threads in three passes with the same positions: blocks of items count
-// their keys' coarse buckets (the high bits) and scatter their items into them, then each
-// coarse bucket is counting-sorted by the low bits; every pass writes only what its block or
-// bucket owns. key_at and place are then called from several threads.
-template <class KeyAt, class Place>
-void counting_sort(std::size_t m, std::size_t buckets, const KeyAt& key_at, const Place& place, bool parallel,
-                   std::vector<std::uint32_t>& end)
+// Stable counting sort of the items 0..m-1 by key_at(k) < buckets: calls place(position,
+// item_at(k)) once for each item, positions in key order and, among equal keys, in item
+// order, and sets end[b] to the position after the last item of bucket b. With `parallel`
+// (and m large enough to pay), on TBB's threads in three passes with the same positions:
+// blocks of items count their keys' coarse buckets (the high bits), then copy their items
+// with their keys into a buffer in coarse order, then each coarse bucket is counting-sorted by
+// the low bits from its stretch of the buffer, which the cache holds; every pass writes only
+// what its block or bucket owns. key_at, item_at and place are then called from several
+// threads; key_at in item order within each block of items.
+template <class KeyAt, class ItemAt, class Place>
+void counting_sort(std::size_t m, std::size_t buckets, const KeyAt& key_at, const ItemAt& item_at, const Place& place,
+                   bool parallel, std::vector<std::uint32_t>& end)
 {
+  using Item = std::decay_t<decltype(item_at(std::size_t(0)))>;
   std::vector<std::uint32_t> key(m);
   end.assign(buckets, 0);
   if(!parallel || m < (std::size_t(1) << 16)) {
@@ -75,7 +79,7 @@ void counting_sort(std::size_t m, std::size_t buckets, const KeyAt& key_at, cons
     for(std::size_t b = 1; b <= buckets; ++b)
       start[b] += start[b - 1];
     for(std::size_t k = 0; k < m; ++k)
-      place(k, std::size_t(start[key[k]]++));
+      place(std::size_t(start[key[k]]++), item_at(k));
     std::copy(start.begin(), start.end() - 1, end.begin());
     return;
   }
@@ -84,7 +88,7 @@ void counting_sort(std::size_t m, std::size_t buckets, const KeyAt& key_at, cons
     ++shift;
   const std::size_t coarse = ((buckets - 1) >> shift) + 1, fine = std::size_t(1) << shift;
   const std::size_t block = 1 << 16, blocks = (m + block - 1) / block;
-  std::vector<std::uint32_t> offset(blocks * coarse, 0), coarse_start(coarse + 1, 0), in_coarse_order(m);
+  std::vector<std::uint32_t> offset(blocks * coarse, 0), coarse_start(coarse + 1, 0);
   for_each_block(true, blocks, [&](std::size_t b) {
     std::uint32_t* count = offset.data() + b * coarse;
     for(std::size_t k = b * block, last = (std::min)(m, k + block); k < last; ++k) {
@@ -102,23 +106,27 @@ void counting_sort(std::size_t m, std::size_t buckets, const KeyAt& key_at, cons
     }
   }
   coarse_start[coarse] = sum;
+  std::vector<std::uint32_t> key_in_coarse_order(m);
+  std::vector<Item> item_in_coarse_order(m);
   for_each_block(true, blocks, [&](std::size_t b) {
     std::uint32_t* next = offset.data() + b * coarse;
-    for(std::size_t k = b * block, last = (std::min)(m, k + block); k < last; ++k)
-      in_coarse_order[next[key[k] >> shift]++] = std::uint32_t(k);
+    for(std::size_t k = b * block, last = (std::min)(m, k + block); k < last; ++k) {
+      const std::uint32_t i = next[key[k] >> shift]++;
+      key_in_coarse_order[i] = key[k];
+      item_in_coarse_order[i] = item_at(k);
+    }
   });
+  std::vector<std::uint32_t>().swap(key);
   for_each_block(true, coarse, [&](std::size_t c) {
     const std::size_t first_key = c << shift, keys = (std::min)(fine, buckets - first_key);
     std::vector<std::uint32_t> next(keys + 1, 0);
     for(std::uint32_t i = coarse_start[c]; i < coarse_start[c + 1]; ++i)
-      ++next[key[in_coarse_order[i]] - first_key + 1];
+      ++next[key_in_coarse_order[i] - first_key + 1];
     next[0] = coarse_start[c];
     for(std::size_t j = 1; j <= keys; ++j)
       next[j] += next[j - 1];
-    for(std::uint32_t i = coarse_start[c]; i < coarse_start[c + 1]; ++i) {
-      const std::uint32_t k = in_coarse_order[i];
-      place(std::size_t(k), std::size_t(next[key[k] - first_key]++));
-    }
+    for(std::uint32_t i = coarse_start[c]; i < coarse_start[c + 1]; ++i)
+      place(std::size_t(next[key_in_coarse_order[i] - first_key]++), item_in_coarse_order[i]);
     std::copy(next.begin(), next.begin() + std::ptrdiff_t(keys), end.begin() + std::ptrdiff_t(first_key));
   });
 }
@@ -180,7 +188,8 @@ void sort_serpentine(const Index* first, const Index* last, Index* out, PointAt 
           cell += (brio_rounds - 1 - brio_round(random)) * cells;
         return cell;
       },
-      [&](std::size_t k, std::size_t position) { out[position] = first[k]; }, parallel, end);
+      [&](std::size_t k) { return first[k]; }, [&](std::size_t position, Index i) { out[position] = i; }, parallel,
+      end);
   if(depth >= max_grid_depth)
     return;
   std::vector<Index> crowded;
@@ -320,12 +329,15 @@ private:
           const std::uint32_t* t = triples.data() + 3 * f;
           return (std::min)({t[0], t[1], t[2]}) >> 2;
         },
-        [&](std::size_t f, std::size_t position) {
+        [&](std::size_t f) {
+          const std::uint32_t* t = triples.data() + 3 * f;
+          return std::array<std::uint32_t, 3>{t[0], t[1], t[2]};
+        },
+        [&](std::size_t position, const std::array<std::uint32_t, 3>& t) {
           std::uint32_t* to = sorted.data() + 3 * position;
-          const std::uint32_t* from = triples.data() + 3 * f;
-          to[0] = from[0];
-          to[1] = from[1];
-          to[2] = from[2];
+          to[0] = t[0];
+          to[1] = t[1];
+          to[2] = t[2];
         },
         parallel, end);
     triples.swap(sorted);
