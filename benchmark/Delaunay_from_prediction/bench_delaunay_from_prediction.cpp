@@ -25,9 +25,10 @@
 //             moved by noise (--noise: gaussian, each coordinate N(0, s^2), or disk, uniform in
 //             the disk of radius s, or sparse, one vertex in 10,000 moved by gaussian noise of
 //             scale 10 s) of scale s = sigma x mean spacing sqrt(A/n) (A: area of the
-//             bounding box), sigma = 0.001 ... 0.5, with strategy carve (local repair),
+//             bounding box), sigma = 0.001 ... 1, with strategy carve (local repair),
 //             t_division (Theorem 2.1, --region-size) and flips (the behaviour before local
-//             repair: a triangulation with an inverted face is rebuilt in place). Every repetition copies the moved DT
+//             repair: a triangulation with an inverted face is rebuilt in place), and on
+//             request regions (Theorem 5.4 in practical form) and rebuild. Every repetition copies the moved DT
 //             (untimed) and times the call alone. Also reported: inverted and flat faces
 //             before the call, faces carved, holes refilled, points reinserted, time per
 //             reinserted point. CGAL's reference is a from-scratch build of the moved points.
@@ -273,7 +274,9 @@ struct Named_strategy
 };
 const Named_strategy repair_strategies[] = {{"carve", DFP::Strategy::carve},
                                             {"t_division", DFP::Strategy::t_division},
-                                            {"flips", DFP::Strategy::flips}};
+                                            {"flips", DFP::Strategy::flips},
+                                            {"regions", DFP::Strategy::regions},
+                                            {"rebuild", DFP::Strategy::rebuild}};
 
 // ---------------------------------------------------------------------------------------------
 // Options and output.
@@ -288,7 +291,7 @@ struct Options
   std::string malloc_policy = "keep";
   std::uint64_t seed = 20260101;
   std::vector<std::string> strategies{"carve", "t_division", "flips"};
-  std::size_t region_size = 0; // 0: the default of Strategy::t_division
+  std::size_t region_size = 0; // 0: the default of each strategy
   int threads = 0;             // > 0: every call of ours also with CGAL::Parallel_tag on that many threads
   bool runs(const std::string& s) const
   {
@@ -311,7 +314,8 @@ void usage(const char* program)
       "  --malloc P      keep (default): mallopt(M_MMAP_MAX=0, M_TRIM_THRESHOLD=-1), freed memory is\n"
       "                  kept by the process and reused; default: glibc's own policy\n"
       "  --seed S        base seed of every input (default 20260101)\n"
-      "  --strategies L  strategies of kinetic and deleted, subset of carve,t_division,flips (default all)\n"
+      "  --strategies L  strategies of kinetic and deleted, subset of carve,t_division,flips,regions,\n"
+      "                  rebuild (default carve,t_division,flips)\n"
       "  --region-size T region size t of strategy t_division (default: max(64, log2(n)^2))\n"
       "  --threads T     also time every call of ours with CGAL::Parallel_tag in a TBB arena of T\n"
       "                  threads, in the same repetitions, and print its speed-up over the\n"
@@ -370,7 +374,7 @@ Options parse(int argc, char** argv)
     } else if(a == "--strategies") {
       o.strategies = split(value(i));
       for(const std::string& st : o.strategies)
-        if(st != "carve" && st != "t_division" && st != "flips") {
+        if(st != "carve" && st != "t_division" && st != "flips" && st != "regions" && st != "rebuild") {
           std::fprintf(stderr, "unknown strategy %s\n", st.c_str());
           std::exit(2);
         }
@@ -886,7 +890,7 @@ void run(const Options& o, const std::string& dist, std::size_t n, Report& repor
     const double spacing = mean_spacing(points);
     for(const std::string& noise : o.noises) {
       const std::uint64_t noise_seed = seed_for(o.seed, "kinetic/" + dist + "/" + noise, n);
-      for(double sigma : {0.001, 0.01, 0.1, 0.5}) {
+      for(double sigma : {0.001, 0.01, 0.1, 0.5, 1.0}) {
         const double step = sigma * spacing;
         const std::vector<Point> moved_points = noisy_points(points, noise, step, noise_seed);
         DTI moved_tr = indexed;
@@ -908,13 +912,17 @@ void run(const Options& o, const std::string& dist, std::size_t n, Report& repor
           row.inverted = (long long)damage.first;
           row.flat = (long long)damage.second;
           const DFP::Strategy strategy = st.strategy;
-          auto call = [&moved_tr, strategy, t](auto tag, DFP::Statistics& stats, Signature& s) {
+          // Strategy::regions takes its own default region size (it depends on the threads).
+          const std::size_t t_of_call = strategy == DFP::Strategy::regions ? o.region_size : t;
+          auto call = [&moved_tr, strategy, t_of_call](auto tag, DFP::Statistics& stats, Signature& s) {
             DTI tr = moved_tr; // untimed copy
             return time_call(
                 tr,
                 [&] {
-                  stats = DFP::make_delaunay<decltype(tag)>(
-                      tr, DFP::parameters::strategy(strategy, DFP::parameters::region_size(t)));
+                  stats = t_of_call == 0
+                              ? DFP::make_delaunay<decltype(tag)>(tr, DFP::parameters::strategy(strategy))
+                              : DFP::make_delaunay<decltype(tag)>(
+                                    tr, DFP::parameters::strategy(strategy, DFP::parameters::region_size(t_of_call)));
                 },
                 s);
           };

@@ -76,7 +76,11 @@ for that to pay off is rebuilt from scratch (`Statistics::fell_back`).
   \cgalParamNBegin{max_flips}
     \cgalParamDescription{the largest number of edge flips to make; past it the call finishes
       with a from-scratch build, so that its cost stays close to a rebuild even for a bad
-      prediction or an inexact kernel that could make Lawson's algorithm cycle}
+      prediction or an inexact kernel that could make Lawson's algorithm cycle. A prediction
+      with more edges failing the in-circle test than this is rebuilt at once (each needs a
+      flip); with the default, one with more than the default over 1.35 (Lawson's least
+      measured number of flips per failing edge), counted or extrapolated from the first
+      eighth of the import}
     \cgalParamType{`std::size_t`}
     \cgalParamDefault{three quarters of the number of points, plus 64}
   \cgalParamNEnd
@@ -125,8 +129,10 @@ Statistics delaunay_from_prediction(const PointRange& points, const FaceRange& f
                                                  internal::default_max_flips(n));
   const bool screen = choose_parameter(get_parameter(np, internal_np::screen_prediction), true);
   const Strategy strategy = choose_parameter(get_parameter(np, internal_np::strategy), Strategy::automatic);
-  const std::size_t region_size = choose_parameter(get_parameter(np, internal_np::region_size),
-                                                   internal::default_region_size(n));
+  const std::size_t region_size = choose_parameter(
+      get_parameter(np, internal_np::region_size),
+      strategy == Strategy::regions ? internal::default_prediction_region_size(n, parallel ? internal::available_threads() : 1)
+                                    : internal::default_region_size(n));
   const auto& gt = dt.geom_traits();
 
   // Check, then import and certify into a fresh triangulation (Invalid_prediction is thrown
@@ -143,8 +149,9 @@ Statistics delaunay_from_prediction(const PointRange& points, const FaceRange& f
     dt.swap(built);
     return stats;
   }
-  return internal::delaunay_from_index_triples(point_at, n, faces, number_of_faces, dt, max_flips, screen, strategy,
-                                               region_size, stats, parallel);
+  constexpr bool default_flip_budget = parameters::is_default_parameter<NamedParameters, internal_np::max_flips_t>::value;
+  return internal::delaunay_from_index_triples(point_at, n, faces, number_of_faces, dt, max_flips, default_flip_budget,
+                                               screen, strategy, region_size, stats, parallel);
   } // not a hierarchy
 }
 
@@ -225,8 +232,41 @@ Statistics make_delaunay(Triangulation& tr, const NamedParameters& np = paramete
 
   const bool carve = strategy == Strategy::automatic || strategy == Strategy::carve;
   const bool divide = strategy == Strategy::t_division;
-  const std::size_t region_size = choose_parameter(get_parameter(np, internal_np::region_size),
-                                                   internal::default_region_size(tr.number_of_vertices()));
+  const std::size_t region_size = choose_parameter(
+      get_parameter(np, internal_np::region_size),
+      strategy == Strategy::regions
+          ? internal::default_prediction_region_size(tr.number_of_vertices(),
+                                                               parallel ? internal::available_threads() : 1)
+          : internal::default_region_size(tr.number_of_vertices()));
+  // With `parallel`, a rebuild builds aside by regions (region_parallel_build.h).
+  const std::size_t blocks = parallel ? internal::default_region_blocks(tr.number_of_vertices(),
+                                                                      internal::available_threads())
+                                      : 1;
+  auto build_by_regions = [&](auto& aside, auto points, std::size_t n) {
+    Statistics ignored;
+    return blocks > 1 && internal::build_by_regions(aside, points, n, ignored, blocks);
+  };
+  if(strategy == Strategy::regions && tr.dimension() == 2 && tr.number_of_vertices() < std::size_t(internal::no_region)) {
+    // Theorem 5.4 in practical form (prediction_region_build.h): the faces of `tr` are the
+    // prediction; the triangulation is built aside by regions, then put on the same vertices.
+    std::vector<std::uint32_t> triples;
+    internal::finite_faces_as_index_triples(tr, triples);
+    internal::Outcome why = internal::Outcome::ok;
+    internal::rebuild_keeping_vertices(tr, stats, [&](auto& aside, auto points, std::size_t n) {
+      Statistics built;
+      why = internal::build_by_prediction_regions(aside, points, n, triples, region_size, built, parallel);
+      stats.regions = built.regions;
+      stats.boundary_vertices = built.boundary_vertices;
+      std::vector<std::uint32_t>().swap(triples);
+      return why == internal::Outcome::ok || build_by_regions(aside, points, n);
+    }); // leaves `tr` as it is when it throws
+    if(why != internal::Outcome::ok) {
+      stats.fell_back = true;
+      stats.fallback_reason = internal::fallback_reason(why);
+    }
+    return stats;
+  }
+
   std::vector<std::pair<Face_handle, int>> stack;
   std::vector<Face_handle> bad;
   bool hull_is_convex = false;
@@ -312,14 +352,6 @@ Statistics make_delaunay(Triangulation& tr, const NamedParameters& np = paramete
   stats.fallback_reason = internal::fallback_reason(why);
   stats.faces_certified = 0;
   stats.points_reinserted = 0;
-  // With `parallel`, the faces are built aside by regions (region_parallel_build.h).
-  const std::size_t blocks = parallel ? internal::default_region_blocks(tr.number_of_vertices(),
-                                                                      internal::available_threads())
-                                      : 1;
-  auto build_by_regions = [&](auto& aside, auto points, std::size_t n) {
-    Statistics ignored;
-    return blocks > 1 && internal::build_by_regions(aside, points, n, ignored, blocks);
-  };
   try {
     internal::rebuild_keeping_vertices(tr, stats, build_by_regions); // leaves `tr` as it is when it throws
   } catch(const Invalid_prediction&) {

@@ -130,6 +130,21 @@ void check_strategy(Mode m, const DFP::Statistics& s, const Expect& e, std::size
                         !reason_is(s, DFP::internal::Outcome::kept_faces_repeated),
                     describe(s));
     }
+  } else if(m == Mode::regions) {
+    // A build by the prediction's regions: every point inserted, no predicted face certified;
+    // with exact predicates the pieces always fit, so a fallback is for interleaved regions or
+    // a degenerate input.
+    DFP_CHECK_MSG(s.points_reinserted == n, describe(s) << ", n = " << n);
+    DFP_CHECK_MSG(s.faces_certified == 0 && s.faces_carved == 0, describe(s));
+    DFP_CHECK_MSG(s.boundary_vertices <= n, describe(s));
+    if(!s.fell_back)
+      DFP_CHECK_MSG(s.regions >= 2, describe(s));
+    else
+      DFP_CHECK_MSG(reason_is(s, DFP::internal::Outcome::too_few_regions) ||
+                        reason_is(s, DFP::internal::Outcome::regions_interleave) ||
+                        reason_is(s, DFP::internal::Outcome::regions_do_not_fit) ||
+                        reason_is(s, DFP::internal::Outcome::no_faces),
+                    describe(s));
   } else if(m == Mode::flips) {
     if(e.not_triangulation)
       DFP_CHECK_MSG(s.fell_back, describe(s));
@@ -327,7 +342,7 @@ void check_dfp_statistics(const DFP::Statistics& s, const Faces& faces,
   DFP_CHECK_MSG(s.faces_in == faces.size(), describe(s) << " vs " << faces.size());
   DFP_CHECK_MSG(s.duplicate_points + dt.number_of_vertices() == n,
                 describe(s) << "; " << dt.number_of_vertices() << " vertices, " << n << " points");
-  if(s.fell_back)
+  if(s.fell_back || built_by_prediction_regions(s, n))
     return;
   // Points used by no face are unused; a point used only by degenerate faces may count too.
   Faces proper;

@@ -3,7 +3,8 @@
 // Author(s): Delaunay_from_prediction contributors
 //
 // The Euclidean minimum spanning tree, relative neighbourhood graph and Gabriel graph from a
-// predicted graph (Corollaries 3.6 and 3.7), against references computed from their
+// predicted graph (Corollaries 3.6 and 3.7), and the tree from predicted faces (Theorem 5.5),
+// against references computed from their
 // definitions: brute force over all pairs (and all third points) on small inputs, and over
 // the edges of CGAL's Delaunay triangulation with every point as a possible blocker on
 // larger ones. Ties (grids, co-circular lattice points, collinear points) and duplicate
@@ -13,6 +14,7 @@
 
 #include "test_util.h"
 
+#include <CGAL/Delaunay_from_prediction/prediction_models.h>
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
@@ -175,6 +177,29 @@ struct Proximity_test
         if(wrong[k].first != order[k])
           wrong[k].second = order[k];
       check_all(points, wrong, all_pairs);
+    }
+    {
+      // Theorem 5.5: the tree from predicted faces, the Delaunay faces and a tenth of their
+      // edges flipped, with the default strategy and Strategy::regions, each concurrency.
+      const Edges expected = reference_emst(points, all_pairs);
+      const std::vector<DFP::Indexed_triangle> dt_faces = DFP::delaunay_triangles(points);
+      const std::vector<DFP::Indexed_triangle> flipped = DFP::k_flip_prediction(points, n / 10 + 1, n);
+      for(const auto* faces : {&dt_faces, &flipped})
+        for(bool regions : {false, true})
+          for_each_concurrency([&] {
+            Scope s(faces == &dt_faces ? "Delaunay faces" : "flipped faces", regions ? ", regions" : "");
+            Edges got;
+            with_concurrency([&](auto tag) {
+              if(regions)
+                DFP::euclidean_minimum_spanning_tree_from_predicted_faces<decltype(tag)>(
+                    points, *faces, std::back_inserter(got), DFP::parameters::strategy(DFP::Strategy::regions));
+              else
+                DFP::euclidean_minimum_spanning_tree_from_predicted_faces<decltype(tag)>(points, *faces,
+                                                                                         std::back_inserter(got));
+              return 0;
+            });
+            DFP_CHECK_MSG(got == expected, got.size() << " edges vs " << expected.size());
+          });
     }
     {
       Scope s("star");

@@ -195,12 +195,12 @@ namespace dfp_test {
 namespace DFP = CGAL::Delaunay_from_prediction;
 
 // The ways the tests call delaunay_from_prediction(): each Strategy, and max_flips(0).
-enum class Mode { defaults, automatic, carve, t_division, flips, rebuild, spanning_tree, no_flips };
+enum class Mode { defaults, automatic, carve, t_division, regions, flips, rebuild, spanning_tree, no_flips };
 // Every Strategy, and every Strategy and max_flips(0).
-const Mode strategy_modes[] = {Mode::defaults, Mode::automatic, Mode::carve,        Mode::t_division,
-                               Mode::flips,    Mode::rebuild,   Mode::spanning_tree};
-const Mode all_modes[] = {Mode::defaults, Mode::automatic,     Mode::carve,   Mode::t_division,
-                          Mode::flips,    Mode::rebuild,       Mode::spanning_tree, Mode::no_flips};
+const Mode strategy_modes[] = {Mode::defaults, Mode::automatic, Mode::carve,   Mode::t_division,
+                               Mode::regions,  Mode::flips,     Mode::rebuild, Mode::spanning_tree};
+const Mode all_modes[] = {Mode::defaults, Mode::automatic, Mode::carve,         Mode::t_division, Mode::regions,
+                          Mode::flips,    Mode::rebuild,   Mode::spanning_tree, Mode::no_flips};
 
 inline const char* name_of(Mode m)
 {
@@ -209,6 +209,7 @@ inline const char* name_of(Mode m)
   case Mode::automatic: return "automatic";
   case Mode::carve: return "carve";
   case Mode::t_division: return "t_division";
+  case Mode::regions: return "regions";
   case Mode::flips: return "flips";
   case Mode::spanning_tree: return "spanning_tree";
   case Mode::no_flips: return "max_flips(0)";
@@ -226,6 +227,7 @@ DFP::Statistics with_mode(Mode m, const F& body)
   case Mode::automatic: return body(P::strategy(DFP::Strategy::automatic));
   case Mode::carve: return body(P::strategy(DFP::Strategy::carve));
   case Mode::t_division: return body(P::strategy(DFP::Strategy::t_division));
+  case Mode::regions: return body(P::strategy(DFP::Strategy::regions));
   case Mode::flips: return body(P::strategy(DFP::Strategy::flips));
   case Mode::spanning_tree: return body(P::strategy(DFP::Strategy::spanning_tree));
   case Mode::no_flips: return body(P::max_flips(std::size_t(0)));
@@ -878,6 +880,14 @@ std::size_t edges_not_in_delaunay(const Faces& faces, const std::vector<typename
   return count;
 }
 
+// Whether the call built by the prediction's regions (Strategy::regions, no fallback): at
+// least two regions, every point inserted, and no edge tested (Strategy::t_division certifies
+// first, and reinserts only some points).
+inline bool built_by_prediction_regions(const DFP::Statistics& s, std::size_t n)
+{
+  return !s.fell_back && s.regions >= 2 && s.edges_tested == 0 && s.points_reinserted == n && n > 0;
+}
+
 // Statistics that must hold for any call of delaunay_from_prediction.
 //
 // When the prediction is not a triangulation, the local repair may carve faces (the importer's
@@ -899,9 +909,11 @@ void check_statistics(const DFP::Statistics& s, const Faces& faces,
                                    << n << " points");
   DFP_CHECK_MSG(std::string(s.fallback_reason).empty() == !s.fell_back,
                 "reason '" << s.fallback_reason << "'");
-  if(s.fell_back) {
+  if(s.fell_back || built_by_prediction_regions(s, n)) {
     DFP_CHECK_MSG(s.points_reinserted == n, s.points_reinserted << " vs " << n);
     DFP_CHECK(s.faces_certified == 0);
+    if(!s.fell_back)
+      DFP_CHECK_MSG(s.points_unused == n - used_indices(faces), s.points_unused << " unused");
   } else {
     const bool repaired = s.faces_carved > 0 || s.holes_refilled > 0 || s.carve_rounds > 0;
     DFP_CHECK(s.edges_not_locally_delaunay <= s.edges_tested);

@@ -60,6 +60,7 @@ struct Statistics
   std::size_t edges_not_locally_delaunay = 0;
   /// number of points used by no predicted face that was kept (a point used only by
   /// degenerate faces counts); they are inserted afterwards, or merged as duplicates.
+  /// `Strategy::regions`: the points used by no predicted face.
   std::size_t points_unused = 0;
   /// number of points equal to a point of smaller index (they share its vertex).
   std::size_t duplicate_points = 0;
@@ -79,12 +80,14 @@ struct Statistics
   /// without carving anything, only to fill holes). In `delaunay_from_prediction()`, the
   /// small holes the import fills itself count as the first round.
   std::size_t carve_rounds = 0;
-  /// `Strategy::t_division`: number of regions the faces were divided into (0 otherwise).
+  /// `Strategy::t_division` and `Strategy::regions`: number of regions the faces were divided
+  /// into (0 otherwise).
   std::size_t regions = 0;
   /// `Strategy::t_division`: number of bad regions, whose faces were replaced.
   std::size_t bad_regions = 0;
   /// `Strategy::t_division`: number of vertices on region boundaries (\f$|V_B|\f$), whose
-  /// Delaunay triangulation was built.
+  /// Delaunay triangulation was built. `Strategy::regions`: number of points triangulated
+  /// again for the seams between regions.
   std::size_t boundary_vertices = 0;
   /// `delaunay_from_spanning_graph()` and the functions built on it: number of edges read.
   std::size_t edges_in = 0;

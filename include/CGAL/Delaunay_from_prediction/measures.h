@@ -106,6 +106,40 @@ struct Prediction_measures
   std::size_t edges_with_more_than_two_faces = 0;
 };
 
+namespace internal {
+
+// prediction_measures() with the flip bound given; `violations` false leaves D_vio and d_vio 0
+// (measure_prediction()), for benchmarks that need d_cross on inputs where D_vio is quadratic.
+template <class PointRange, class FaceRange>
+Prediction_measures measures_of(const PointRange& points, const FaceRange& faces, std::size_t max_flips,
+                                bool violations)
+{
+  using Point = typename std::iterator_traits<decltype(std::begin(points))>::value_type;
+  using K = typename CGAL::Kernel_traits<Point>::Kernel;
+  using DT = internal::Indexed_delaunay_2<K>;
+
+  Prediction_measures m;
+  const auto point_at = std::begin(points);
+  const std::size_t n = std::size_t(std::distance(std::begin(points), std::end(points)));
+  m.points = n;
+  if(n >= (std::size_t(1) << 32))
+    throw Invalid_prediction("Delaunay_from_prediction: prediction_measures takes fewer than 2^32 points");
+  // DT(P), and Lawson's flip count from G when G is a triangulation (Strategy::flips: a
+  // prediction that is not a triangulation is rebuilt, not repaired, so that fell_back tells
+  // which it is and the flips are Lawson's from G itself).
+  DT dt;
+  const Statistics stats = delaunay_from_prediction(
+      points, faces, dt,
+      parameters::max_flips(max_flips, parameters::screen_prediction(false, parameters::strategy(Strategy::flips))));
+  m.faces = stats.faces_in;
+  if(m.faces >= (std::size_t(1) << 32))
+    throw Invalid_prediction("Delaunay_from_prediction: prediction_measures takes fewer than 2^32 faces");
+  measure_prediction(m, point_at, n, faces, dt, stats, violations);
+  return m;
+}
+
+} // namespace internal
+
 /*!
 \ingroup PkgDelaunayFromPredictionRef
 computes the closeness measures of Table 1 of the paper between the prediction `faces` and the
@@ -151,35 +185,13 @@ Prediction_measures prediction_measures(const PointRange& points, const FaceRang
 {
   using parameters::choose_parameter;
   using parameters::get_parameter;
-  using Point = typename std::iterator_traits<decltype(std::begin(points))>::value_type;
-  using K = typename CGAL::Kernel_traits<Point>::Kernel;
-  using DT = internal::Indexed_delaunay_2<K>;
-
-  Prediction_measures m;
-  const auto point_at = std::begin(points);
   const std::size_t n = std::size_t(std::distance(std::begin(points), std::end(points)));
-  m.points = n;
-  if(n >= (std::size_t(1) << 32))
-    throw Invalid_prediction("Delaunay_from_prediction: prediction_measures takes fewer than 2^32 points");
   // Lawson's algorithm flips a pair of points at most once (a flipped-away edge lies above
   // the lowered lifted surface for good), so with exact predicates it never needs more than
   // n(n-1)/2 flips; the bound only stops an inexact kernel from cycling.
   const std::size_t max_flips = choose_parameter(get_parameter(np, internal_np::max_flips),
                                                  n < 3 ? std::size_t(64) : n * (n - 1) / 2);
-
-  // DT(P), and Lawson's flip count from G when G is a triangulation (Strategy::flips: a
-  // prediction that is not a triangulation is rebuilt, not repaired, so that fell_back tells
-  // which it is and the flips are Lawson's from G itself).
-  DT dt;
-  const Statistics stats = delaunay_from_prediction(
-      points, faces, dt,
-      parameters::max_flips(max_flips, parameters::screen_prediction(false, parameters::strategy(Strategy::flips))));
-  m.faces = stats.faces_in;
-  if(m.faces >= (std::size_t(1) << 32))
-    throw Invalid_prediction("Delaunay_from_prediction: prediction_measures takes fewer than 2^32 faces");
-
-  internal::measure_prediction(m, point_at, n, faces, dt, stats);
-  return m;
+  return internal::measures_of(points, faces, max_flips, true);
 }
 
 } // namespace Delaunay_from_prediction

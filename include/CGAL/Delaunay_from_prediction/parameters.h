@@ -32,7 +32,12 @@ How `delaunay_from_prediction()` and `make_delaunay()` use a prediction (named p
 the time differs.
 */
 enum class Strategy {
-  /// the default: currently the same as `carve`.
+  /// the default: `carve`, whose cheap measurements decide between the local repair and a
+  /// rebuild (sampled faces against sampled points, missing faces counted, inverted faces and
+  /// failing edges counted during certification, each against a budget); `regions`,
+  /// `t_division` and `spanning_tree` are never chosen, being measured slower than the
+  /// rebuild or the repair on every input (see the user manual, section "How the Default
+  /// Strategy Chooses").
   automatic,
   /// certify, then Lawson flips; a prediction that is not a triangulation of its points is
   /// rebuilt from scratch at once (for comparison).
@@ -50,6 +55,17 @@ enum class Strategy {
   /// left to `carve` (the flips, after a fill). Never faster than `carve` beyond run-to-run
   /// noise, much slower where it divides (see the user manual): selectable for comparison.
   t_division,
+  /// Theorem 5.4 of the paper (the \f$d_{cross}\f$-sensitive algorithm) in practical form:
+  /// divide the prediction's faces into connected regions of about t faces (named parameter
+  /// `region_size`; by default two regions per thread and at least four), triangulate each
+  /// region's points on its own (on TBB's threads with `CGAL::Parallel_tag`), keep the faces
+  /// whose circumdisks a grid shows to hold no point of another region, triangulate the seams
+  /// between them again, join the pieces and certify the result by exact predicates. The
+  /// prediction need not be a triangulation: inverted, crossing, missing faces only widen the
+  /// seams. Falls back to a rebuild when the regions interleave too much. Not the paper's
+  /// recursion: each region is built by the package's insertion, so the work is that of a
+  /// build from scratch plus the seams, whatever \f$d_{cross}\f$ (see the user manual).
+  regions,
   /// ignore the prediction and rebuild (for comparisons).
   rebuild,
   /// `delaunay_from_prediction()` only (`make_delaunay()` treats it as `rebuild`): no

@@ -12,6 +12,7 @@
 #ifndef CGAL_DELAUNAY_FROM_PREDICTION_PROXIMITY_GRAPHS_H
 #define CGAL_DELAUNAY_FROM_PREDICTION_PROXIMITY_GRAPHS_H
 
+#include <CGAL/Delaunay_from_prediction_2.h>
 #include <CGAL/Delaunay_from_prediction/spanning_graph.h>
 #include <CGAL/Delaunay_from_prediction/internal/proximity_graph_extraction.h>
 #include <CGAL/Delaunay_from_prediction/internal/union_find.h>
@@ -62,24 +63,45 @@ template <class PointRange, class EdgeRange, class OutputIterator>
 OutputIterator euclidean_minimum_spanning_tree_from_prediction(const PointRange& points, const EdgeRange& tree_edges,
                                                                OutputIterator out)
 {
-  internal::Indexed_delaunay<PointRange> del(points, tree_edges);
-  const auto point_at = std::begin(points);
-  const std::size_t n = del.representative.size();
-  std::vector<std::pair<std::size_t, std::size_t>> candidates, tree;
-  del.for_each_edge([&](auto f, int i) {
-    const std::size_t a = f->vertex(del.dt.ccw(i))->info(), b = f->vertex(del.dt.cw(i))->info();
-    candidates.emplace_back((std::min)(a, b), (std::max)(a, b));
-  });
-  internal::sort_by_exact_length(candidates, point_at, del.dt.geom_traits());
-  // Kruskal's algorithm; duplicates first (zero length, joined to their representative).
-  internal::Union_find sets(n);
-  for(std::size_t i = 0; i < n; ++i)
-    if(del.representative[i] != i && sets.join(i, del.representative[i]))
-      tree.emplace_back(del.representative[i], i);
-  for(const auto& e : candidates)
-    if(sets.join(e.first, e.second))
-      tree.push_back(e);
-  return internal::write_sorted(tree, out);
+  return internal::minimum_spanning_tree_of(internal::Indexed_delaunay<PointRange>(points, tree_edges), points, out);
+}
+
+/*!
+\ingroup PkgDelaunayFromPredictionRef
+Computes the Euclidean minimum spanning tree of `points` from a predicted triangulation (any
+faces on the points): Theorem 5.5 of the paper, in practical form. The Delaunay triangulation
+is built by `delaunay_from_prediction()` with the named parameters `np` (with
+`Strategy::regions`, by the division into regions of Theorem 5.4), then Kruskal's algorithm
+runs on its edges. The paper's Theorem 5.5 runs the recursion of Theorem 5.4 on spanning trees
+and obtains the Delaunay triangulation from the tree; here the tree is read off the Delaunay
+triangulation, so the cost is that of `delaunay_from_prediction()` plus a sort of its edges,
+and the paper's \f$O(n (\log^* n)^2 + n \log d_{cross-emst})\f$ bound is not claimed.
+
+Tie rule and output: as `euclidean_minimum_spanning_tree_from_prediction()`.
+
+\tparam ConcurrencyTag `CGAL::Sequential_tag` (default), `CGAL::Parallel_tag` or
+        `CGAL::Parallel_if_available_tag`, as for `delaunay_from_prediction()`.
+\tparam PointRange a random-access range of points of a CGAL kernel.
+\tparam FaceRange as for `delaunay_from_prediction()`.
+\tparam OutputIterator an output iterator accepting `std::pair<std::size_t, std::size_t>`.
+\tparam NamedParameters named parameters of `delaunay_from_prediction()`.
+
+\param points the points.
+\param faces the predicted faces (orientation free; need not form a triangulation).
+\param out receives the \f$n - 1\f$ edges (for \f$n \geq 1\f$) as pairs `(i, j)`, `i < j`, in
+       increasing lexicographic order.
+\param np the named parameters of `delaunay_from_prediction()`.
+\returns the output iterator past the last edge written.
+\throws Invalid_prediction as `delaunay_from_prediction()`.
+*/
+template <class ConcurrencyTag = Sequential_tag, class PointRange, class FaceRange, class OutputIterator,
+          class NamedParameters = parameters::Default_named_parameters>
+OutputIterator euclidean_minimum_spanning_tree_from_predicted_faces(const PointRange& points, const FaceRange& faces,
+                                                                    OutputIterator out,
+                                                                    const NamedParameters& np = parameters::default_values())
+{
+  return internal::minimum_spanning_tree_of(
+      internal::Indexed_delaunay<PointRange>(points, faces, ConcurrencyTag(), np), points, out);
 }
 
 /*!

@@ -54,8 +54,13 @@ enum class Outcome {
   every_region_bad,
   kept_faces_repeated,
   kept_faces_do_not_fit,
+  // The build by the prediction's regions.
+  too_few_regions,
+  regions_interleave,
+  regions_do_not_fit,
   // Flips.
   flip_budget_exhausted,
+  too_many_failing_edges,
   // The spanning-tree engine.
   graph_too_many_components,
   tree_walks_missing,
@@ -99,7 +104,11 @@ inline constexpr const char* fallback_reasons[] = {
     "every region of the t-division is bad",
     "two kept faces have the same vertices",
     "the kept faces do not fit the triangulation of the boundary vertices",
+    "the prediction is too small to be divided into regions",
+    "the prediction's regions interleave too much to be triangulated apart",
+    "the triangulations of the prediction's regions do not fit together",
     "the flip budget was exhausted",
+    "the edges failing the in-circle test would need more flips than the budget",
     "the graph has too many components to guide the insertion",
     "the walks along the spanning tree kept missing",
     "the graph's edges are far longer than the spacing of the points",

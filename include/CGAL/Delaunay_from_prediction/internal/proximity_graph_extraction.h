@@ -3,14 +3,16 @@
 // Author(s): Delaunay_from_prediction founding team
 //
 // Reading the proximity graphs of proximity_graphs.h off the Delaunay triangulation: DT(P)
-// built from the predicted graph with point indices as info, index pairs sorted by the exact
-// length of their segments, sorted pairs written out.
+// built from the predicted graph or faces with point indices as info, index pairs sorted by the
+// exact length of their segments, Kruskal's algorithm, sorted pairs written out.
 
 #ifndef CGAL_DELAUNAY_FROM_PREDICTION_INTERNAL_PROXIMITY_GRAPH_EXTRACTION_H
 #define CGAL_DELAUNAY_FROM_PREDICTION_INTERNAL_PROXIMITY_GRAPH_EXTRACTION_H
 
+#include <CGAL/Delaunay_from_prediction_2.h>
 #include <CGAL/Delaunay_from_prediction/Statistics.h>
 #include <CGAL/Delaunay_from_prediction/spanning_graph.h>
+#include <CGAL/Delaunay_from_prediction/internal/union_find.h>
 
 #include <CGAL/Delaunay_triangulation_2.h>
 #include <CGAL/FPU.h>
@@ -47,10 +49,31 @@ struct Indexed_delaunay
   DT dt;
   std::vector<std::size_t> representative;
 
+  // From a predicted graph (delaunay_from_spanning_graph()).
   template <class EdgeRange>
   Indexed_delaunay(const PointRange& points, const EdgeRange& edges)
   {
-    const Statistics stats = delaunay_from_spanning_graph(points, edges, dt);
+    find_representatives(points, delaunay_from_spanning_graph(points, edges, dt));
+  }
+  // From predicted faces (delaunay_from_prediction() with the named parameters `np`).
+  template <class ConcurrencyTag, class FaceRange, class NamedParameters>
+  Indexed_delaunay(const PointRange& points, const FaceRange& faces, ConcurrencyTag, const NamedParameters& np)
+  {
+    find_representatives(points, delaunay_from_prediction<ConcurrencyTag>(points, faces, dt, np));
+  }
+
+  // Calls `visit(f, i)` for every finite edge (f, i) of the triangulation (dimension 1: the
+  // edges of the chain; below: none).
+  template <class Visit>
+  void for_each_edge(Visit visit) const
+  {
+    for(auto e = dt.finite_edges_begin(); e != dt.finite_edges_end(); ++e)
+      visit(e->first, e->second);
+  }
+
+private:
+  void find_representatives(const PointRange& points, const Statistics& stats)
+  {
     const auto point_at = std::begin(points);
     const std::size_t n = std::size_t(std::distance(std::begin(points), std::end(points)));
     representative.resize(n);
@@ -67,15 +90,6 @@ struct Indexed_delaunay
     for(std::size_t k = 1; k < n; ++k)
       if(compare_xy(point_at[sorted[k - 1]], point_at[sorted[k]]) == EQUAL)
         representative[sorted[k]] = representative[sorted[k - 1]];
-  }
-
-  // Calls `visit(f, i)` for every finite edge (f, i) of the triangulation (dimension 1: the
-  // edges of the chain; below: none).
-  template <class Visit>
-  void for_each_edge(Visit visit) const
-  {
-    for(auto e = dt.finite_edges_begin(); e != dt.finite_edges_end(); ++e)
-      visit(e->first, e->second);
   }
 };
 
@@ -137,6 +151,30 @@ OutputIterator write_sorted(std::vector<std::pair<std::size_t, std::size_t>>& ed
   for(const auto& e : edges)
     *out++ = e;
   return out;
+}
+
+// The Euclidean minimum spanning tree read off `del` (an Indexed_delaunay) by Kruskal's
+// algorithm on its edges, written to `out` in increasing lexicographic order: duplicates first
+// (zero length, joined to their representative), then the edges by exact length (ties by the
+// pair).
+template <class Indexed, class PointRange, class OutputIterator>
+OutputIterator minimum_spanning_tree_of(const Indexed& del, const PointRange& points, OutputIterator out)
+{
+  const std::size_t n = del.representative.size();
+  std::vector<std::pair<std::size_t, std::size_t>> candidates, tree;
+  del.for_each_edge([&](auto f, int i) {
+    const std::size_t a = f->vertex(del.dt.ccw(i))->info(), b = f->vertex(del.dt.cw(i))->info();
+    candidates.emplace_back((std::min)(a, b), (std::max)(a, b));
+  });
+  sort_by_exact_length(candidates, std::begin(points), del.dt.geom_traits());
+  Union_find sets(n);
+  for(std::size_t i = 0; i < n; ++i)
+    if(del.representative[i] != i && sets.join(i, del.representative[i]))
+      tree.emplace_back(del.representative[i], i);
+  for(const auto& e : candidates)
+    if(sets.join(e.first, e.second))
+      tree.push_back(e);
+  return write_sorted(tree, out);
 }
 
 } // namespace internal

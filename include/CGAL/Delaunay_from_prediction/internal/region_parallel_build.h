@@ -111,22 +111,36 @@ struct Region_block
   double ylo = -std::numeric_limits<double>::infinity(), yhi = std::numeric_limits<double>::infinity();
 };
 
-// Whether the circumdisk of the triangle (a, b, c), in scaled coordinates, lies inside the
-// rectangle of `block` by a margin. False for flat or tiny triangles whose circumcentre is not
-// finite (NaN compares false): their face goes to the seams, which is always safe.
-inline bool circumdisk_inside(const std::array<double, 2>& a, const std::array<double, 2>& b,
-                              const std::array<double, 2>& c, const Region_block& block)
+// The circumdisk of the triangle (a, b, c), in scaled coordinates: centre (x, y) and a radius
+// enlarged by a margin. The relative error of the centre and radius is a few ulps times the
+// triangle's condition; the margin (1e-9 of the unit box plus 1e-6 of the radius) covers any
+// triangle that is not nearly flat, and a nearly flat one has a huge disk. Not finite (inf or
+// NaN) for a flat or tiny triangle: callers test finite().
+struct Scaled_disk
+{
+  double x, y, r;
+  bool finite() const { return std::isfinite(x) && std::isfinite(y) && std::isfinite(r); }
+};
+inline Scaled_disk scaled_circumdisk(const std::array<double, 2>& a, const std::array<double, 2>& b,
+                                     const std::array<double, 2>& c)
 {
   const double bx = b[0] - a[0], by = b[1] - a[1], cx = c[0] - a[0], cy = c[1] - a[1];
   const double d = 2 * (bx * cy - by * cx);
   const double b2 = bx * bx + by * by, c2 = cx * cx + cy * cy;
   const double ux = (cy * b2 - by * c2) / d, uy = (bx * c2 - cx * b2) / d;
-  // The relative error of the centre and radius is a few ulps times the triangle's
-  // condition; the margin (1e-9 of the unit box plus 1e-6 of the radius) covers any triangle
-  // that is not nearly flat, and a nearly flat one has a huge disk that is not inside anyway.
-  const double r = std::sqrt(ux * ux + uy * uy) * (1 + 1e-6) + 1e-9;
-  const double ox = a[0] + ux, oy = a[1] + uy;
-  return ox - r > block.xlo && ox + r < block.xhi && oy - r > block.ylo && oy + r < block.yhi;
+  return Scaled_disk{a[0] + ux, a[1] + uy, std::sqrt(ux * ux + uy * uy) * (1 + 1e-6) + 1e-9};
+}
+
+// Whether the circumdisk of the triangle (a, b, c), in scaled coordinates, lies inside the
+// rectangle of `block` with the margin of scaled_circumdisk(). False for flat or tiny
+// triangles whose circumcentre is not finite (NaN compares false): their face goes to the
+// seams, which is always safe.
+inline bool circumdisk_inside(const std::array<double, 2>& a, const std::array<double, 2>& b,
+                              const std::array<double, 2>& c, const Region_block& block)
+{
+  const Scaled_disk disk = scaled_circumdisk(a, b, c);
+  return disk.x - disk.r > block.xlo && disk.x + disk.r < block.xhi && disk.y - disk.r > block.ylo &&
+         disk.y + disk.r < block.yhi;
 }
 
 // Splits order[block.begin, block.end) at its median along the longer side of `extent` (the
@@ -183,11 +197,13 @@ struct Region_build_report
   double split_seconds = 0, blocks_seconds = 0, seams_seconds = 0, join_seconds = 0;
 };
 
-// Builds DT(points[0, n)) into `dt` (no vertex yet) by regions (see the file's comment):
-// `blocks` blocks (a power of two, at least 2) on TBB's threads when `parallel`. Every point is
-// a vertex with its index as info(), duplicates merged (the smallest index kept, counted in
-// `stats.duplicate_points`). Returns false, with `dt` still empty, when the steering went
-// wrong; then the caller builds sequentially.
+// Builds DT(points[0, n)) into `dt` (no vertex yet) from blocks of the points: block b is
+// order[region[b].begin, region[b].end) (every point in exactly one block; its rectangle is not
+// read here). `kept(b, p, q, r)` says, on the scaled coordinates (`scale`, grid.h) of a face of
+// DT(block b), whether no point of another block can lie in the face's circumdisk: it only
+// steers, the result is certified as described below. Returns false, with `dt` still empty,
+// when the pieces do not fit; then the caller builds otherwise. `clock` runs since the caller
+// began (its time so far is the split's, in the report).
 //
 // The triangulation is assembled without any search: each block creates the vertices of its
 // points and its kept faces in containers of its own (CGAL's containers are not thread-safe),
@@ -201,9 +217,11 @@ struct Region_build_report
 // triangulation with the same two faces, one between seam faces likewise in DT(seam
 // vertices), and the walls are tested by the exact in-circle test. Walls that fail (none
 // when the steering is right) are flipped by Lawson's algorithm.
-template <class DT, class PointIterator>
-bool build_by_regions(DT& dt, PointIterator points, std::size_t n, Statistics& stats, std::size_t blocks,
-                      bool parallel = true, Region_build_report* report = nullptr)
+template <class DT, class PointIterator, class Kept>
+bool triangulate_blocks(DT& dt, PointIterator points, std::size_t n, double scale,
+                        const std::vector<std::uint32_t>& order, const std::vector<Region_block>& region,
+                        const Kept& kept_in_block, Statistics& stats, bool parallel, Region_build_report* report,
+                        Real_timer& clock)
 {
   using Gt = typename DT::Geom_traits;
   using Rt = typename Region_triangulation<Gt>::type;
@@ -214,39 +232,13 @@ bool build_by_regions(DT& dt, PointIterator points, std::size_t n, Statistics& s
   using Face_handle = typename DT::Face_handle;
   using Face_range = typename Tds::Face_range;
   CGAL_precondition(dt.number_of_vertices() == 0);
-  if(blocks < 2 || n < 3 || n >= std::size_t(std::uint32_t(-1)))
-    return false;
   const Gt& gt = dt.geom_traits();
-  Real_timer clock;
-  clock.start();
-  double stage_start = 0, stage_seconds[4] = {0, 0, 0, 0};
+  double stage_start = clock.time(), stage_seconds[4] = {stage_start, 0, 0, 0};
   auto end_stage = [&](int stage) {
     const double now = clock.time();
     stage_seconds[stage] = now - stage_start;
     stage_start = now;
   };
-  int depth = 0;
-  while((std::size_t(1) << depth) < blocks)
-    ++depth;
-
-  // Scaled coordinates: exact (a power of two), the box's larger side in [1, 2] (grid.h).
-  const Box box = bounding_box(n, [&](std::size_t i) -> decltype(points[0]) { return points[i]; });
-  const double scale = unit_scale(box);
-  std::vector<std::array<double, 2>> xy(n);
-  for_each_range(parallel, n, 65536, [&](std::size_t first, std::size_t last) {
-    for(std::size_t i = first; i < last; ++i)
-      xy[i] = {CGAL::to_double(points[i].x()) * scale, CGAL::to_double(points[i].y()) * scale};
-  });
-  std::vector<std::uint32_t> order(n);
-  for(std::size_t i = 0; i < n; ++i)
-    order[i] = std::uint32_t(i);
-  std::vector<Region_block> region;
-  Region_block all;
-  all.end = n;
-  split_into_regions(order, xy, all,
-                     {box.xmin * scale, box.xmax * scale, box.ymin * scale, box.ymax * scale}, depth, region, parallel);
-  std::vector<std::array<double, 2>>().swap(xy);
-  end_stage(0);
 
   // Each block, on a thread: its triangulation, built in a triangulation of the caller's type
   // whose vertices and kept faces become the result's (their containers spliced at the end).
@@ -291,7 +283,7 @@ bool build_by_regions(DT& dt, PointIterator points, std::size_t n, Statistics& s
       return std::array<double, 2>{CGAL::to_double(v->point().x()) * scale, CGAL::to_double(v->point().y()) * scale};
     };
     auto kept = [&](Face_handle f) {
-      return !bdt.is_infinite(f) && circumdisk_inside(xy_of(f->vertex(0)), xy_of(f->vertex(1)), xy_of(f->vertex(2)), block);
+      return !bdt.is_infinite(f) && kept_in_block(b, xy_of(f->vertex(0)), xy_of(f->vertex(1)), xy_of(f->vertex(2)));
     };
     std::vector<Face_handle> dropped;
     Hash_map<const void*, std::uint32_t> seam(64);
@@ -548,6 +540,46 @@ bool build_by_regions(DT& dt, PointIterator points, std::size_t n, Statistics& s
     report->walls_failing = walls_failing;
   }
   return true;
+}
+
+// Builds DT(points[0, n)) into `dt` (no vertex yet) by regions (see the file's comment):
+// `blocks` blocks (a power of two, at least 2) on TBB's threads when `parallel`. Every point is
+// a vertex with its index as info(), duplicates merged (the smallest index kept, counted in
+// `stats.duplicate_points`). Returns false, with `dt` still empty, when the steering went
+// wrong; then the caller builds sequentially.
+template <class DT, class PointIterator>
+bool build_by_regions(DT& dt, PointIterator points, std::size_t n, Statistics& stats, std::size_t blocks,
+                      bool parallel = true, Region_build_report* report = nullptr)
+{
+  CGAL_precondition(dt.number_of_vertices() == 0);
+  if(blocks < 2 || n < 3 || n >= std::size_t(std::uint32_t(-1)))
+    return false;
+  Real_timer clock;
+  clock.start();
+  int depth = 0;
+  while((std::size_t(1) << depth) < blocks)
+    ++depth;
+
+  // Scaled coordinates: exact (a power of two), the box's larger side in [1, 2] (grid.h).
+  const Box box = bounding_box(n, [&](std::size_t i) -> decltype(points[0]) { return points[i]; });
+  const double scale = unit_scale(box);
+  std::vector<std::array<double, 2>> xy(n);
+  for_each_range(parallel, n, 65536, [&](std::size_t first, std::size_t last) {
+    for(std::size_t i = first; i < last; ++i)
+      xy[i] = {CGAL::to_double(points[i].x()) * scale, CGAL::to_double(points[i].y()) * scale};
+  });
+  std::vector<std::uint32_t> order(n);
+  for(std::size_t i = 0; i < n; ++i)
+    order[i] = std::uint32_t(i);
+  std::vector<Region_block> region;
+  Region_block all;
+  all.end = n;
+  split_into_regions(order, xy, all,
+                     {box.xmin * scale, box.xmax * scale, box.ymin * scale, box.ymax * scale}, depth, region, parallel);
+  std::vector<std::array<double, 2>>().swap(xy);
+  auto inside_rectangle = [&](std::size_t b, const std::array<double, 2>& p, const std::array<double, 2>& q,
+                              const std::array<double, 2>& r) { return circumdisk_inside(p, q, r, region[b]); };
+  return triangulate_blocks(dt, points, n, scale, order, region, inside_rectangle, stats, parallel, report, clock);
 }
 
 } // namespace internal
