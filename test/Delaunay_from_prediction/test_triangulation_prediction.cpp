@@ -9,7 +9,8 @@
 //  - with a budget large enough and the screen off, it is repaired by flips alone (fell_back
 //    false, at least one flip per wrong edge), and the result is CGAL's DT;
 //  - with default parameters the result is CGAL's DT too, and if the call falls back, the
-//    reason is the flip budget or the sampling screen, never a failed certification.
+//    reason is the flip budget (spent, or the failing edges would exceed it) or the sampling
+//    screen, never a failed certification.
 
 #include <CGAL/Delaunay_from_prediction_2.h> // first: the header is self-contained
 
@@ -46,6 +47,7 @@ void check_plain_triangulation(const Points& points, CGAL::Random& rng)
     if(s.fell_back) {
       const std::string reason = s.fallback_reason;
       DFP_CHECK_MSG(reason == "the flip budget was exhausted" ||
+                        reason == "the edges failing the in-circle test would need more flips than the budget" ||
                         reason == "most sampled faces have sampled points inside their circumcircles",
                     reason);
     }
