@@ -230,6 +230,17 @@ void degenerate()
         faces.push_back({2000, 1, 2});
         with_region_size(t, points, faces);
       }
+      {
+        // Sides of the box in a ratio of 1e305: the grid's cells a side are clamped in double.
+        Scope scope("subnormal spread, one point far off");
+        std::vector<Epick::Point_2> points;
+        for(int i = 0; i < 6; ++i)
+          for(int j = 0; j < 6; ++j)
+            points.emplace_back(i * 1.424e-306, j * 1.424e-306);
+        const Faces faces = DFP::delaunay_triangles(points);
+        points[3] = Epick::Point_2(points[3].x(), 1.0);
+        with_region_size(t, points, faces);
+      }
       for(double scale : {1e300, 1e-300}) {
         Scope scope("coordinates of order ", scale);
         const auto points = uniform<Epick>(3000, 19, scale);

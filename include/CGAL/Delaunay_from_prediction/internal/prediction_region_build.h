@@ -192,17 +192,20 @@ Outcome build_by_prediction_regions(DT& dt, PointIterator points, std::size_t n,
   const double scale = unit_scale(box);
   const double width = box.xmax * scale - box.xmin * scale, height = box.ymax * scale - box.ymin * scale;
   const double cells_wanted = double(n) / 2;
+  // At most n + 1 cells a row or column (a very flat box), clamped in double: the ratio of the
+  // sides of a box may be 1e300, and casting a double beyond std::size_t is undefined.
+  auto cells_along = [&](double wanted) {
+    return std::size_t((std::max)(1.0, (std::min)(std::ceil(wanted), double(n + 1))));
+  };
   std::size_t columns = 1, rows = 1;
   if(width > 0 && height > 0) {
-    columns = std::size_t(std::ceil(std::sqrt(cells_wanted * width / height)));
-    rows = std::size_t(std::ceil(std::sqrt(cells_wanted * height / width)));
+    columns = cells_along(std::sqrt(cells_wanted * width / height));
+    rows = cells_along(std::sqrt(cells_wanted * height / width));
   } else if(width > 0) {
-    columns = std::size_t(cells_wanted) + 1;
+    columns = cells_along(cells_wanted);
   } else if(height > 0) {
-    rows = std::size_t(cells_wanted) + 1;
+    rows = cells_along(cells_wanted);
   }
-  columns = (std::min)(columns, n + 1); // a very flat box: no more cells than points a row
-  rows = (std::min)(rows, n + 1);
   const Grid_axis column_of(box.xmin * scale, box.xmax * scale, columns), row_of(box.ymin * scale, box.ymax * scale, rows);
   constexpr std::uint32_t empty = std::uint32_t(-1), mixed = std::uint32_t(-2);
   std::vector<std::uint32_t> owner(columns * rows, empty);
