@@ -11,12 +11,24 @@
 //  - with default parameters the result is CGAL's DT too, and if the call falls back, the
 //    reason is the flip budget (spent, or the failing edges would exceed it) or the sampling
 //    screen, never a failed certification.
+// The failing-edge screen (failing_edges_exceed(), read before the import): it flags a
+// rho-model prediction with the adversarial completion (about 1.6 n wrong edges, the default
+// budget allows 0.56 n failing edges) and passes DT(P) and DT(P) with 1% of its edges flipped;
+// with the faces in random order it concludes nothing; a budget the caller sets keeps its
+// exact meaning (the screen does not run).
 
 #include <CGAL/Delaunay_from_prediction_2.h> // first: the header is self-contained
 
 #include "test_util.h"
 
+#include <CGAL/Delaunay_from_prediction/prediction_models.h>
+
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+
+#include <algorithm>
+#include <cstdint>
+#include <random>
+#include <string>
 
 using namespace dfp_test;
 using K = CGAL::Exact_predicates_inexact_constructions_kernel;
@@ -54,6 +66,52 @@ void check_plain_triangulation(const Points& points, CGAL::Random& rng)
   }
 }
 
+void check_failing_edge_screen(const Points& points, CGAL::Random& rng)
+{
+  const std::size_t n = points.size();
+  const std::size_t limit = DFP::internal::max_failing_edges(DFP::internal::default_max_flips(n));
+  auto triples_of = [](const std::vector<DFP::Indexed_triangle>& triangles) {
+    std::vector<std::uint32_t> t;
+    for(const DFP::Indexed_triangle& f : triangles)
+      for(const std::size_t v : f)
+        t.push_back(std::uint32_t(v));
+    return t;
+  };
+  auto exceeds = [&](const std::vector<DFP::Indexed_triangle>& triangles) {
+    return DFP::internal::failing_edges_exceed(K(), points.begin(), n, triples_of(triangles), limit);
+  };
+  const std::vector<DFP::Indexed_triangle> bad =
+      DFP::rho_model_prediction(points, 0.1, 17, DFP::Completion::adversarial);
+  const std::size_t wrong = edges_not_in_delaunay<K>(bad, points);
+  DFP_CHECK_MSG(wrong > limit, wrong << " wrong edges, limit " << limit);
+  DFP_CHECK(exceeds(bad));
+  DFP_CHECK(!exceeds(DFP::random_flip_prediction(points, 1.0, 17)));  // DT(P) itself
+  DFP_CHECK(!exceeds(DFP::random_flip_prediction(points, 0.99, 17))); // 1% of its edges flipped
+  std::vector<DFP::Indexed_triangle> shuffled_bad = bad;
+  std::shuffle(shuffled_bad.begin(), shuffled_bad.end(), std::mt19937(std::uint32_t(rng.get_int(0, 1 << 30))));
+  DFP_CHECK(!exceeds(shuffled_bad)); // too few edges pair within a window: no conclusion
+  {
+    // Default parameters: rebuilt before the import (nothing reordered), equal to CGAL's.
+    DT_with_info<K> dt;
+    const DFP::Statistics s = DFP::delaunay_from_prediction(points, bad, dt);
+    check_is_cgal_delaunay(dt, points);
+    DFP_CHECK(s.fell_back);
+    DFP_CHECK_MSG(std::string(s.fallback_reason) ==
+                      "the edges failing the in-circle test would need more flips than the budget",
+                  s.fallback_reason);
+    DFP_CHECK(!s.input_reordered && s.edges_tested == 0);
+  }
+  {
+    // The caller's budget, larger than the flips needed: repaired by flips, no screen.
+    DT_with_info<K> dt;
+    const DFP::Statistics s =
+        DFP::delaunay_from_prediction(points, bad, dt, DFP::parameters::max_flips(100 * n));
+    check_is_cgal_delaunay(dt, points);
+    DFP_CHECK_MSG(!s.fell_back, s.fallback_reason);
+    DFP_CHECK(s.flips >= wrong);
+  }
+}
+
 int main()
 {
   CGAL::Random rng(1789);
@@ -66,6 +124,10 @@ int main()
       Scope scope("Triangulation_2 of ", n, " clustered points");
       DFP_RUN(check_plain_triangulation(to_points<K>(clustered_points(n, rng)), rng));
     }
+  }
+  for(std::size_t n : {std::size_t(20000), std::size_t(60000)}) {
+    Scope scope("failing-edge screen, ", n, " uniform points");
+    DFP_RUN(check_failing_edge_screen(to_points<K>(uniform_points(n, rng)), rng));
   }
   return finish("test_triangulation_prediction");
 }

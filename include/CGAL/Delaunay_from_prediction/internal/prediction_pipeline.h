@@ -65,7 +65,7 @@ Statistics delaunay_from_index_triples(PointIterator point_at, std::size_t n, co
   // A budget the caller set is a hard limit: more failing edges than flips rebuild at once.
   // The default one is an estimate of what pays, and so is the rebuild at once when the
   // failing edges would exhaust it (max_failing_edges()), told from the first eighth of the
-  // import on.
+  // import on, or before it from samples of the faces (failing_edges_exceed()).
   const std::size_t max_failing = default_flip_budget ? max_failing_edges(max_flips) : max_flips;
   const auto& gt = dt.geom_traits();
   DT result(gt);
@@ -92,6 +92,8 @@ Statistics delaunay_from_index_triples(PointIterator point_at, std::size_t n, co
     }
   } else if(screen && internal::fails_sampling_screen(gt, point_at, n, triples))
     imported.failure = Outcome::screen_rejected;
+  else if(screen && default_flip_budget && internal::failing_edges_exceed(gt, point_at, n, triples, max_failing))
+    imported.failure = Outcome::too_many_failing_edges;
   else if(internal::missing_faces_exceed(gt, point_at, n, triples, carve ? n / 8 + 16 : n / 64 + 16))
     imported.failure = carve ? Outcome::too_many_holes : Outcome::holes_or_not_a_triangulation;
   else
