@@ -1,17 +1,18 @@
 # Figures of benchmark/Delaunay_from_prediction/bench_d_cross.cpp (Sections 5 to 7: the ρ model
 # and the process of Corollary 6.6), drawn from the CSV file it writes with --csv:
-#   d_cross_time_vs_rho.svg     time per point against 1/ρ, one panel per model, every strategy
-#                               and CGAL's build from scratch;
-#   d_cross_time_vs_dcross.svg  time per point of Lawson's flips against the measured d_cross,
-#                               all models, with the least-squares fit a + b log2(d_cross).
+#   d_cross_time_vs_rho_N.svg     time per point against 1/ρ, one panel per model, every strategy
+#                                 and CGAL's build from scratch;
+#   d_cross_time_vs_dcross_N.svg  time per point of Lawson's flips against the measured d_cross,
+#                                 all models, with the least-squares fit a + b log2(d_cross).
 # By hand, from the repository root:
-#   build/benchmark/Delaunay_from_prediction/bench_d_cross --n 100000,1000000 \
+#   build/benchmark/Delaunay_from_prediction/bench_d_cross --n 1e5,1e6 --reps 3 --rhos 0.5,0.2,0.1,0.01 \
 #       --csv benchmark/Delaunay_from_prediction/results/issue24_d_cross.csv
 #   gnuplot -e "results='benchmark/Delaunay_from_prediction/results'; figdir='doc/Delaunay_from_prediction/fig'" \
 #           scripts/plot_d_cross.gnuplot
 # Variables: results (CSV folder), figdir (output folder), fmt ('svg', default, or 'png'),
 # csv (input file, default results.'/issue24_d_cross.csv'), nplot (the n drawn, default 1000000;
-# when the file has no row with n = nplot, the largest n in the file is drawn instead).
+# when the file has no row with n = nplot, the largest n in the file is drawn instead; N in
+# the file names is the n drawn).
 # Times plotted are the medians over the repetitions (the only times the CSV file has), per point
 # in ns: 1e9 * seconds / n.
 
@@ -42,7 +43,7 @@ if (STATS_sum == 0) {
 }
 
 # The file of a figure, from its name without extension.
-output_name(name) = figdir.'/'.name.'.'.fmt
+output_name(name) = figdir.'/'.name.sprintf('_%d', nplot).'.'.fmt
 if (fmt eq 'png') {
   set terminal png size 900,600 enhanced font 'DejaVu Sans,11' background rgb 'white'
 } else {

@@ -145,8 +145,10 @@ int main(int argc, char** argv)
       std::fprintf(stderr, "unknown model %s\n", m.c_str());
       return 2;
     }
+  const bool keep = keep_freed_memory(); // as bench_delaunay_from_prediction: see benchmark_util.h
   std::printf("# bench_d_cross: %s; %s\n", local_date_time().c_str(), build_description().c_str());
-  std::printf("# uniform points in the unit square, Epick, one thread, %d repetitions; ratio = CGAL / ours\n", reps);
+  std::printf("# uniform points in the unit square, Epick, one thread, %d repetitions; ratio = CGAL / ours; "
+              "malloc policy %s\n", reps, keep ? "keep" : "glibc default (mallopt failed)");
   std::printf("%-11s %8s %6s %8s %6s %7s |", "model", "n", "rho", "D/n", "dcross", "CGAL s");
   for(const Strategy_column& c : columns)
     std::printf(" %9s s ratio |", c.name);

@@ -78,7 +78,7 @@ void check_failing_edge_screen(const Points& points, CGAL::Random& rng)
     return t;
   };
   auto exceeds = [&](const std::vector<DFP::Indexed_triangle>& triangles) {
-    return DFP::internal::failing_edges_exceed(K(), points.begin(), n, triples_of(triangles), limit);
+    return DFP::internal::failing_edges_exceed(points.begin(), n, triples_of(triangles), limit);
   };
   const std::vector<DFP::Indexed_triangle> bad =
       DFP::rho_model_prediction(points, 0.1, 17, DFP::Completion::adversarial);

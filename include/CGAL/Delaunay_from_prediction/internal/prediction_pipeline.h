@@ -92,7 +92,7 @@ Statistics delaunay_from_index_triples(PointIterator point_at, std::size_t n, co
     }
   } else if(screen && internal::fails_sampling_screen(gt, point_at, n, triples))
     imported.failure = Outcome::screen_rejected;
-  else if(screen && default_flip_budget && internal::failing_edges_exceed(gt, point_at, n, triples, max_failing))
+  else if(screen && default_flip_budget && internal::failing_edges_exceed(point_at, n, triples, max_failing))
     imported.failure = Outcome::too_many_failing_edges;
   else if(internal::missing_faces_exceed(gt, point_at, n, triples, carve ? n / 8 + 16 : n / 64 + 16))
     imported.failure = carve ? Outcome::too_many_holes : Outcome::holes_or_not_a_triangulation;

@@ -76,41 +76,51 @@ bool fails_sampling_screen(const Gt& gt, PointIterator points, std::size_t n, co
 // spatially coherent order (a mesher's, CGAL's face iteration, the previous frame's) pairs most
 // of its edges within a window; a list in random order pairs few, and then nothing is
 // concluded. The failing fraction of the tested edges times the 3F/2 edges of F faces is the
-// estimate. At most 16,384 faces are read (under 1 ms): about 1% of a certified prediction's
-// import at 10^6 points. Only speed depends on this decision, never the result (the import's
-// own count, extrapolated from its first eighth, is the second check).
-template <class Gt, class PointIterator>
-bool failing_edges_exceed(const Gt& gt, PointIterator points, std::size_t n, const std::vector<std::uint32_t>& triples,
+// estimate. At most 8,192 faces are read: about 0.5% of a certified prediction's import at
+// 10^6 points.
+// Robustness: the tests are plain double arithmetic, not the traits' predicates (which cost
+// ten times more here), because the answer only steers: a wrong sign, or an edge skipped
+// where a determinant overflows, underflows to zero or is not finite (coordinates near
+// 1e+-150 and beyond), changes the estimate, never the result (the import's own exact count,
+// extrapolated from its first eighth, is the second check, and a rebuild is always correct).
+template <class PointIterator>
+bool failing_edges_exceed(PointIterator points, std::size_t n, const std::vector<std::uint32_t>& triples,
                           std::size_t limit)
 {
   const std::size_t F = triples.size() / 3;
   if(n < 4096 || F < 4096 || double(limit) >= 1.5 * double(F))
     return false;
   constexpr std::size_t windows = 8;
-  // A sixty-fourth of the faces, between 512 and 2048 per window.
-  const std::size_t window_faces = (std::min)(std::size_t(2048), (std::max)(std::size_t(512), F / (64 * windows)));
-  auto orientation = gt.orientation_2_object();
-  auto in_circle = gt.side_of_oriented_circle_2_object();
+  // A sixty-fourth of the faces, between 256 and 1024 per window.
+  const std::size_t window_faces = (std::min)(std::size_t(1024), (std::max)(std::size_t(256), F / (64 * windows)));
   Hash_map<std::uint64_t, std::uint32_t> apex_of(4 * window_faces); // half-edge (a, b) -> c of face abc
   auto key = [](std::uint32_t a, std::uint32_t b) { return (std::uint64_t(a) << 32) | b; };
+  auto x = [&](std::uint32_t v) { return CGAL::to_double(points[v].x()); };
+  auto y = [&](std::uint32_t v) { return CGAL::to_double(points[v].y()); };
   std::size_t tested = 0, failing = 0;
   for(std::size_t w = 0; w < windows; ++w) {
     apex_of.clear();
     const std::size_t first = (std::min)(F - window_faces, (2 * w + 1) * F / (2 * windows));
     for(std::size_t f = first; f < first + window_faces; ++f) {
       std::uint32_t v[3] = {triples[3 * f], triples[3 * f + 1], triples[3 * f + 2]};
-      const Orientation o = orientation(points[v[0]], points[v[1]], points[v[2]]);
-      if(o == COLLINEAR)
-        continue;
-      if(o == CLOCKWISE)
+      const double o = (x(v[1]) - x(v[0])) * (y(v[2]) - y(v[0])) - (y(v[1]) - y(v[0])) * (x(v[2]) - x(v[0]));
+      if(!(o != 0 && std::isfinite(o)))
+        continue; // flat, or beyond double's range: not sampled
+      if(o < 0)
         std::swap(v[1], v[2]);
       for(int j = 0; j < 3; ++j) {
         const std::uint32_t a = v[j], b = v[(j + 1) % 3], c = v[(j + 2) % 3];
         std::uint32_t d;
         if(apex_of.take(key(b, a), d)) { // the face on the other side of edge ab
+          // In-circle determinant of d against the counterclockwise face abc, d at the origin.
+          const double ax = x(a) - x(d), ay = y(a) - y(d), bx = x(b) - x(d), by = y(b) - y(d);
+          const double cx = x(c) - x(d), cy = y(c) - y(d);
+          const double det = (ax * ax + ay * ay) * (bx * cy - by * cx) - (bx * bx + by * by) * (ax * cy - ay * cx) +
+                             (cx * cx + cy * cy) * (ax * by - ay * bx);
+          if(!std::isfinite(det))
+            continue;
           ++tested;
-          if(in_circle(points[a], points[b], points[c], points[d]) == ON_POSITIVE_SIDE)
-            ++failing;
+          failing += det > 0 ? 1 : 0;
         } else
           apex_of.insert(key(a, b), c);
       }
