@@ -70,6 +70,8 @@ template <class ConcurrencyTag = Sequential_tag, class PointRange, class EdgeRan
 Statistics delaunay_from_predicted_edges(const PointRange& points, const EdgeRange& edges, DT& dt,
                                          const NamedParameters& np = parameters::default_values())
 {
+  internal::check_point_range_type<PointRange, typename DT::Point>();
+  internal::check_edge_range_type<EdgeRange>();
   const auto point_at = std::begin(points);
   const std::size_t n = std::size_t(std::distance(std::begin(points), std::end(points)));
   internal::check_points_are_finite(point_at, n);

@@ -112,6 +112,8 @@ template <class ConcurrencyTag = Sequential_tag, class PointRange, class FaceRan
 Statistics delaunay_from_prediction(const PointRange& points, const FaceRange& faces, DT& dt,
                                     const NamedParameters& np = parameters::default_values())
 {
+  internal::check_point_range_type<PointRange, typename DT::Point>();
+  internal::check_face_range_type<FaceRange>();
   constexpr bool parallel = internal::runs_in_parallel<ConcurrencyTag>();
   if constexpr(internal::is_triangulation_hierarchy<DT>::value) { // level 0, then the upper levels
     return internal::with_levels_rebuilt(

@@ -125,6 +125,7 @@ template <class ConcurrencyTag = Sequential_tag, class PointRange, class DT,
           class NamedParameters = parameters::Default_named_parameters>
 Statistics brio_dc_delaunay(const PointRange& points, DT& dt, const NamedParameters& np = parameters::default_values())
 {
+  internal::check_point_range_type<PointRange, typename DT::Point>();
   constexpr bool parallel = internal::runs_in_parallel<ConcurrencyTag>();
   if constexpr(internal::is_triangulation_hierarchy<DT>::value) { // level 0, then the upper levels
     return internal::with_levels_rebuilt(dt, [&](auto& level0) { return brio_dc_delaunay<ConcurrencyTag>(points, level0, np); });

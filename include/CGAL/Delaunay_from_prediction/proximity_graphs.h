@@ -63,6 +63,7 @@ template <class PointRange, class EdgeRange, class OutputIterator>
 OutputIterator euclidean_minimum_spanning_tree_from_prediction(const PointRange& points, const EdgeRange& tree_edges,
                                                                OutputIterator out)
 {
+  internal::check_edge_range_type<EdgeRange>();
   return internal::minimum_spanning_tree_of(internal::Indexed_delaunay<PointRange>(points, tree_edges), points, out);
 }
 
@@ -100,6 +101,7 @@ OutputIterator euclidean_minimum_spanning_tree_from_predicted_faces(const PointR
                                                                     OutputIterator out,
                                                                     const NamedParameters& np = parameters::default_values())
 {
+  internal::check_face_range_type<FaceRange>();
   return internal::minimum_spanning_tree_of(
       internal::Indexed_delaunay<PointRange>(points, faces, ConcurrencyTag(), np), points, out);
 }
@@ -130,6 +132,7 @@ template <class PointRange, class EdgeRange, class OutputIterator>
 OutputIterator relative_neighborhood_graph_from_prediction(const PointRange& points, const EdgeRange& edges,
                                                            OutputIterator out)
 {
+  internal::check_edge_range_type<EdgeRange>();
   internal::Indexed_delaunay<PointRange> del(points, edges);
   using Vertex_handle = typename internal::Indexed_delaunay<PointRange>::DT::Vertex_handle;
   auto compare_distance = del.dt.geom_traits().compare_distance_2_object();
@@ -205,6 +208,7 @@ equal positions count as one, the smallest of their indices.
 template <class PointRange, class EdgeRange, class OutputIterator>
 OutputIterator gabriel_graph_from_prediction(const PointRange& points, const EdgeRange& edges, OutputIterator out)
 {
+  internal::check_edge_range_type<EdgeRange>();
   internal::Indexed_delaunay<PointRange> del(points, edges);
   auto angle = del.dt.geom_traits().angle_2_object();
   std::vector<std::pair<std::size_t, std::size_t>> graph;

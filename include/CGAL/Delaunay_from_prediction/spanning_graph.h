@@ -107,6 +107,8 @@ template <class ConcurrencyTag = Sequential_tag, class PointRange, class EdgeRan
 Statistics delaunay_from_spanning_graph(const PointRange& points, const EdgeRange& edges, DT& dt,
                                         const NamedParameters& np = parameters::default_values())
 {
+  internal::check_point_range_type<PointRange, typename DT::Point>();
+  internal::check_edge_range_type<EdgeRange>();
   (void)internal::runs_in_parallel<ConcurrencyTag>(); // checks the tag: sequential in this version (manual, "Parallel Mode")
   if constexpr(internal::is_triangulation_hierarchy<DT>::value) { // level 0, then the upper levels
     return internal::with_levels_rebuilt(

@@ -153,6 +153,74 @@ auto edge_end(const Edge& e, int j)
     return j == 0 ? std::get<0>(e) : std::get<1>(e);
 }
 
+// Compile-time checks of the argument types, called first in each entry point, so that a
+// wrong type is reported by one plain message at the call instead of deep in the algorithm.
+template <class Range, class = void>
+struct range_value // not a range: void
+{
+  using type = void;
+};
+template <class Range>
+struct range_value<Range, std::void_t<decltype(*std::begin(std::declval<const Range&>())),
+                                      decltype(std::end(std::declval<const Range&>()))>>
+{
+  using type = std::decay_t<decltype(*std::begin(std::declval<const Range&>()))>;
+};
+
+template <class Face, class = void>
+struct is_index_triple : std::false_type {};
+template <class Face>
+struct is_index_triple<Face, std::void_t<decltype(std::declval<const Face&>()[0])>>
+    : std::is_integral<std::decay_t<decltype(std::declval<const Face&>()[0])>> {};
+
+template <class Edge, class = void>
+struct first_of_tuple // not tuple-like: void
+{
+  using type = void;
+};
+template <class Edge>
+struct first_of_tuple<Edge, std::void_t<decltype(std::get<0>(std::declval<const Edge&>())),
+                                        decltype(std::get<1>(std::declval<const Edge&>()))>>
+{
+  using type = std::decay_t<decltype(std::get<0>(std::declval<const Edge&>()))>;
+};
+
+// Whether edge_end() reads two integer indices from an Edge.
+template <class Edge>
+constexpr bool is_index_pair()
+{
+  if constexpr(has_first_and_second<Edge>::value)
+    return std::is_integral<std::decay_t<decltype(std::declval<const Edge&>().first)>>::value;
+  else if constexpr(has_subscript<Edge>::value)
+    return std::is_integral<std::decay_t<decltype(std::declval<const Edge&>()[0])>>::value;
+  else
+    return std::is_integral<typename first_of_tuple<Edge>::type>::value;
+}
+
+template <class PointRange, class Point>
+constexpr void check_point_range_type()
+{
+  static_assert(std::is_convertible<typename range_value<PointRange>::type, Point>::value,
+                "Delaunay_from_prediction: `points` must be a range of the triangulation's points "
+                "(DT::Point, e.g. std::vector<K::Point_2> for a triangulation of kernel K)");
+}
+
+template <class FaceRange>
+constexpr void check_face_range_type()
+{
+  static_assert(is_index_triple<typename range_value<FaceRange>::type>::value,
+                "Delaunay_from_prediction: `faces` must be a range of faces, each three integer indices into "
+                "`points` read as face[0], face[1], face[2] (e.g. std::vector<std::array<int, 3>>)");
+}
+
+template <class EdgeRange>
+constexpr void check_edge_range_type()
+{
+  static_assert(is_index_pair<typename range_value<EdgeRange>::type>(),
+                "Delaunay_from_prediction: `edges` must be a range of edges, each two integer indices into "
+                "`points` (e.g. std::vector<std::pair<int, int>> or std::vector<std::array<int, 2>>)");
+}
+
 // Reads and validates edge number k: both ends in [0, n) and different.
 template <class Edge>
 std::pair<std::size_t, std::size_t> read_edge(const Edge& e, std::size_t k, std::size_t n)
