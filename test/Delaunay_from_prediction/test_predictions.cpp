@@ -5,7 +5,8 @@
 // delaunay_from_prediction() with every kind of prediction, good and bad, on uniform and
 // clustered points (Epick): the result is always CGAL's DT built from scratch, and the
 // statistics say what happened (certified, flipped, fell back, points unused, duplicates).
-// Also: the accepted face and point containers, and vertex bases with and without info.
+// Also: the accepted face and point containers, vertex bases with and without info, and
+// Statistics written to a stream.
 
 #include <CGAL/Delaunay_from_prediction_2.h> // first: the header is self-contained
 
@@ -15,6 +16,8 @@
 
 #include <deque>
 #include <list>
+#include <sstream>
+#include <string>
 
 using namespace dfp_test;
 using K = CGAL::Exact_predicates_inexact_constructions_kernel;
@@ -526,6 +529,40 @@ void test_all(const char* dt_name, const XYs& xy, CGAL::Random& rng)
   DFP_RUN(test_random_corruptions<DT>(rng));
 }
 
+// operator<< of Statistics: the five main members always, other counts only when not 0, the
+// reason when the call fell back; every value as the member holds it.
+void test_statistics_stream(const Points& points)
+{
+  CGAL::Random rng(25); // its own: the tests after it keep their random draws
+  auto text_of = [](const DFP::Statistics& s) {
+    std::ostringstream out;
+    out << s;
+    return out.str();
+  };
+  auto has_line = [](const std::string& text, const std::string& line) {
+    return text.find(line + "\n") != std::string::npos &&
+           (text.compare(0, line.size() + 1, line + "\n") == 0 || text.find("\n" + line + "\n") != std::string::npos);
+  };
+  const Faces dt_faces = faces_by_info(indexed_delaunay<K>(points));
+  const DFP::Statistics good = run<DT_with_info<K>>(points, shuffled(dt_faces, rng));
+  const std::string text = text_of(good);
+  DFP_CHECK_MSG(has_line(text, "faces_in: " + std::to_string(dt_faces.size())), text);
+  DFP_CHECK_MSG(has_line(text, "faces_certified: " + std::to_string(good.faces_certified)), text);
+  DFP_CHECK_MSG(has_line(text, "flips: 0"), text);
+  DFP_CHECK_MSG(has_line(text, "fell_back: false"), text);
+  DFP_CHECK_MSG(has_line(text, "edges_tested: " + std::to_string(good.edges_tested)), text);
+  DFP_CHECK_MSG(text.find("regions:") == std::string::npos && text.find("fallback_reason") == std::string::npos, text);
+  DFP::Statistics bad;
+  bad.fell_back = true;
+  bad.regions = 7;
+  bad.fallback_reason = "a face is degenerate";
+  const std::string bad_text = text_of(bad);
+  DFP_CHECK_MSG(has_line(bad_text, "fell_back: true") && has_line(bad_text, "regions: 7") &&
+                    has_line(bad_text, "fallback_reason: a face is degenerate"),
+                bad_text);
+  DFP_CHECK_MSG(bad_text.find("edges_tested") == std::string::npos, bad_text);
+}
+
 int main()
 {
   CGAL::Random rng(20260101);
@@ -536,6 +573,7 @@ int main()
     test_all<DT_plain<K>>("DT without info", xy, rng);
     DFP_RUN(test_containers(to_points<K>(xy)));
     DFP_RUN(test_other_vertex_bases(to_points<K>(xy), rng));
+    DFP_RUN(test_statistics_stream(to_points<K>(xy)));
   }
   {
     Scope scope("clustered, n = 3000");

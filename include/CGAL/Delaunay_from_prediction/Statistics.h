@@ -6,8 +6,10 @@
 #define CGAL_DELAUNAY_FROM_PREDICTION_STATISTICS_H
 
 #include <cstddef>
+#include <ostream>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 namespace CGAL {
 namespace Delaunay_from_prediction {
@@ -109,6 +111,36 @@ struct Statistics
   /// points; otherwise a static string such as `"a face is degenerate"`.
   const char* fallback_reason = "";
 };
+
+/*!
+\ingroup PkgDelaunayFromPredictionRef
+writes `s` to `out`, one `name: value` line per member, named as the members are: always
+`faces_in`, `faces_certified`, `flips`, `points_reinserted` and `fell_back` (`true` or
+`false`), then every other count that is not 0, the flag `input_reordered` when set, and
+`fallback_reason` when the prediction was not used as it is.
+*/
+inline std::ostream& operator<<(std::ostream& out, const Statistics& s)
+{
+  out << "faces_in: " << s.faces_in << "\nfaces_certified: " << s.faces_certified << "\nflips: " << s.flips
+      << "\npoints_reinserted: " << s.points_reinserted << "\nfell_back: " << (s.fell_back ? "true" : "false") << "\n";
+  const std::pair<const char*, std::size_t> counts[] = {
+      {"edges_tested", s.edges_tested},         {"edges_not_locally_delaunay", s.edges_not_locally_delaunay},
+      {"points_unused", s.points_unused},       {"duplicate_points", s.duplicate_points},
+      {"faces_carved", s.faces_carved},         {"holes_refilled", s.holes_refilled},
+      {"carve_rounds", s.carve_rounds},         {"regions", s.regions},
+      {"bad_regions", s.bad_regions},           {"boundary_vertices", s.boundary_vertices},
+      {"edges_in", s.edges_in},                 {"points_located", s.points_located},
+      {"faces_visited", s.faces_visited},       {"walk_fallbacks", s.walk_fallbacks},
+      {"insertion_rounds", s.insertion_rounds}};
+  for(const auto& c : counts)
+    if(c.second != 0)
+      out << c.first << ": " << c.second << "\n";
+  if(s.input_reordered)
+    out << "input_reordered: true\n";
+  if(s.fallback_reason != nullptr && s.fallback_reason[0] != '\0')
+    out << "fallback_reason: " << s.fallback_reason << "\n";
+  return out;
+}
 
 } // namespace Delaunay_from_prediction
 } // namespace CGAL
