@@ -78,11 +78,12 @@ bool fails_sampling_screen(const Gt& gt, PointIterator points, std::size_t n, co
 // concluded. The failing fraction of the tested edges times the 3F/2 edges of F faces is the
 // estimate. At most 8,192 faces are read: about 0.5% of a certified prediction's import at
 // 10^6 points.
-// Robustness: the tests are plain double arithmetic, not the traits' predicates (which cost
-// ten times more here), because the answer only steers: a wrong sign, or an edge skipped
-// where a determinant overflows, underflows to zero or is not finite (coordinates near
-// 1e+-150 and beyond), changes the estimate, never the result (the import's own exact count,
-// extrapolated from its first eighth, is the second check, and a rebuild is always correct).
+// Robustness: the tests are plain double arithmetic, not the traits' predicates (with Epick's
+// filtered predicates the sampling cost about twice as much per face), because the answer
+// only steers: a wrong sign, or an edge skipped where a determinant overflows, underflows to
+// zero or is not finite (coordinates near 1e+-150 and beyond), changes the estimate, never
+// the result (the import's own exact count, extrapolated from its first eighth, is the second
+// check, and a rebuild is always correct).
 template <class PointIterator>
 bool failing_edges_exceed(PointIterator points, std::size_t n, const std::vector<std::uint32_t>& triples,
                           std::size_t limit)
