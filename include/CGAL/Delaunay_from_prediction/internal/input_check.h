@@ -167,12 +167,6 @@ struct range_value<Range, std::void_t<decltype(*std::begin(std::declval<const Ra
   using type = std::decay_t<decltype(*std::begin(std::declval<const Range&>()))>;
 };
 
-template <class Face, class = void>
-struct is_index_triple : std::false_type {};
-template <class Face>
-struct is_index_triple<Face, std::void_t<decltype(std::declval<const Face&>()[0])>>
-    : std::is_integral<std::decay_t<decltype(std::declval<const Face&>()[0])>> {};
-
 template <class Edge, class = void>
 struct first_of_tuple // not tuple-like: void
 {
@@ -184,6 +178,16 @@ struct first_of_tuple<Edge, std::void_t<decltype(std::get<0>(std::declval<const 
 {
   using type = std::decay_t<decltype(std::get<0>(std::declval<const Edge&>()))>;
 };
+
+// Whether read_face() reads three integer indices from a Face.
+template <class Face>
+constexpr bool is_index_triple()
+{
+  if constexpr(has_subscript<Face>::value)
+    return std::is_integral<std::decay_t<decltype(std::declval<const Face&>()[0])>>::value;
+  else
+    return false;
+}
 
 // Whether edge_end() reads two integer indices from an Edge.
 template <class Edge>
@@ -208,7 +212,7 @@ constexpr void check_point_range_type()
 template <class FaceRange>
 constexpr void check_face_range_type()
 {
-  static_assert(is_index_triple<typename range_value<FaceRange>::type>::value,
+  static_assert(is_index_triple<typename range_value<FaceRange>::type>(),
                 "Delaunay_from_prediction: `faces` must be a range of faces, each three integer indices into "
                 "`points` read as face[0], face[1], face[2] (e.g. std::vector<std::array<int, 3>>)");
 }
