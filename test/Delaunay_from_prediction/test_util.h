@@ -610,7 +610,10 @@ T2_with_info<K> indexed_triangulation(const std::vector<typename K::Point_2>& po
 }
 
 // Flips up to k random interior edges whose quadrilateral is strictly convex (so the result is
-// still a triangulation). Returns the number of flips made.
+// still a triangulation). Returns the number of flips made. An edge a flip created is never
+// flipped: it stays, so the edge it replaced, which crosses it, cannot come back, and every flip
+// removes an edge of the input for good (k flips of a Delaunay triangulation leave k of its
+// edges missing, never the triangulation itself).
 template <class Tr>
 std::size_t flip_randomly(Tr& tr, std::size_t k, CGAL::Random& rng)
 {
@@ -620,6 +623,12 @@ std::size_t flip_randomly(Tr& tr, std::size_t k, CGAL::Random& rng)
   for(auto f = tr.finite_faces_begin(); f != tr.finite_faces_end(); ++f)
     faces.push_back(f);
   auto orientation = tr.geom_traits().orientation_2_object();
+  using Vertex_address = const typename Tr::Vertex*;
+  auto edge = [](typename Tr::Vertex_handle u, typename Tr::Vertex_handle v) {
+    const Vertex_address a = &*u, b = &*v;
+    return std::pair<Vertex_address, Vertex_address>(std::min(a, b), std::max(a, b));
+  };
+  std::set<std::pair<Vertex_address, Vertex_address>> created;
   std::size_t done = 0;
   for(std::size_t attempt = 0; done < k && attempt < 100 * k + 100; ++attempt) {
     const auto f = faces[std::size_t(rng.get_int(0, int(faces.size())))];
@@ -630,9 +639,13 @@ std::size_t flip_randomly(Tr& tr, std::size_t k, CGAL::Random& rng)
     const auto& a = f->vertex(i)->point();
     const auto& b = f->vertex(tr.ccw(i))->point();
     const auto& c = f->vertex(tr.cw(i))->point();
-    const auto& d = g->vertex(tr.mirror_index(f, i))->point();
+    const auto opposite = g->vertex(tr.mirror_index(f, i));
+    const auto& d = opposite->point();
     if(orientation(a, b, d) != CGAL::LEFT_TURN || orientation(a, d, c) != CGAL::LEFT_TURN)
       continue;
+    if(created.count(edge(f->vertex(tr.ccw(i)), f->vertex(tr.cw(i)))) != 0)
+      continue;
+    created.insert(edge(f->vertex(i), opposite));
     tr.tds().flip(f, i);
     ++done;
   }
