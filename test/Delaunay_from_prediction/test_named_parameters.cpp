@@ -7,7 +7,8 @@
 // way), max_flips(0) forces a fallback, for delaunay_from_prediction() and make_delaunay();
 // screen_prediction(bool): good predictions pass the sampling screen at n >= 4096, random
 // triples at n >= 5000 are rejected by it, and fall back without it with strategy(flips) (the
-// default strategy may repair them locally instead); chaining with CGAL's parameters.
+// default strategy may repair them locally instead); chaining with CGAL's parameters, and the
+// package's chained as CGAL's are (`max_flips(0).strategy(s)`).
 
 #include <CGAL/Delaunay_from_prediction_2.h> // first: the header is self-contained
 
@@ -88,6 +89,33 @@ void test_max_flips(CGAL::Random& rng)
     Scope s("max_flips(needed).verbose(false)");
     const DFP::Statistics st = run(points, faces, NP::max_flips(needed).verbose(false));
     DFP_CHECK(!st.fell_back);
+  }
+  // The chained form, as CGAL's own parameters chain: each value is read wherever it stands.
+  {
+    Scope s("max_flips(0).screen_prediction(false)");
+    const DFP::Statistics st = run(points, faces, NP::max_flips(0).screen_prediction(false));
+    DFP_CHECK(st.fell_back);
+    DFP_CHECK(st.flips == 0);
+  }
+  {
+    Scope s("screen_prediction(true).max_flips(needed - 1).strategy(Strategy::flips)");
+    const DFP::Statistics st =
+        run(points, faces, NP::screen_prediction(true).max_flips(needed - 1).strategy(DFP::Strategy::flips));
+    DFP_CHECK(st.fell_back);
+    DFP_CHECK(st.flips <= needed - 1);
+  }
+  {
+    Scope s("strategy(Strategy::flips).max_flips(needed)");
+    const DFP::Statistics st = run(points, faces, NP::strategy(DFP::Strategy::flips).max_flips(needed));
+    DFP_CHECK(!st.fell_back);
+    DFP_CHECK(st.flips == needed);
+  }
+  {
+    Scope s("max_flips(needed, CGAL::parameters::verbose(false)).strategy(Strategy::rebuild)");
+    const DFP::Statistics st =
+        run(points, faces, NP::max_flips(needed, CGAL::parameters::verbose(false)).strategy(DFP::Strategy::rebuild));
+    DFP_CHECK(st.fell_back);
+    DFP_CHECK(st.flips == 0);
   }
   {
     Scope s("screen_prediction(false, max_flips(0))");

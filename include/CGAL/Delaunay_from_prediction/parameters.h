@@ -3,9 +3,10 @@
 // Author(s): Delaunay_from_prediction founding team
 //
 // Named parameters of the package. CGAL 5.5 pastes a fixed list of tags into
-// Named_function_parameters, so an outside package cannot add `.max_flips()` to CGAL's chain;
-// ours are free functions that take an optional CGAL chain as a second argument:
-// `max_flips(10, CGAL::parameters::verbose(true))`.
+// Named_function_parameters, so an outside package cannot add `.max_flips()` to CGAL's own
+// chain. Ours return a Named_parameters, a CGAL chain (derived from it, so that CGAL's lookup
+// reads it) with the package's parameters as members: `max_flips(10).strategy(s)`. They also
+// take an optional CGAL chain as a second argument: `max_flips(10, CGAL::parameters::verbose(true))`.
 
 #ifndef CGAL_DELAUNAY_FROM_PREDICTION_PARAMETERS_H
 #define CGAL_DELAUNAY_FROM_PREDICTION_PARAMETERS_H
@@ -121,23 +122,66 @@ enum class Split_method {
 namespace parameters {
 using namespace CGAL::parameters;
 
+/*!
+\ingroup PkgDelaunayFromPredictionRef
+A chain of named parameters that starts with one of the package's: a
+`CGAL::Named_function_parameters` (every function of \cgal and of the package reads it as one)
+whose members add the package's parameters, so that they chain as \cgal's do:
+`DFP::parameters::max_flips(1000).strategy(DFP::Strategy::flips).screen_prediction(false)`.
+\cgal's own members (such as `.geom_traits()`) chain too, but return a plain
+`CGAL::Named_function_parameters`, after which the package's parameters are added with their
+two-argument form: `max_flips(1000, CGAL::parameters::geom_traits(gt))`.
+*/
+template <class T, class Tag, class Base = CGAL::internal_np::No_property>
+struct Named_parameters : CGAL::Named_function_parameters<T, Tag, Base>
+{
+  /// the \cgal chain this is.
+  using Chain = CGAL::Named_function_parameters<T, Tag, Base>;
+  /// constructs the chain of one parameter.
+  /// \param v the value of the parameter.
+  explicit Named_parameters(const T& v) : Chain(v) {}
+  /// constructs the chain of a parameter followed by a chain.
+  /// \param v the value of the parameter.
+  /// \param next the chain that follows it.
+  Named_parameters(const T& v, const Base& next) : Chain(v, next) {}
+
+#define CGAL_DFP_CHAINED_PARAMETER(NAME)                                                         \
+  template <class V>                                                                           \
+  Named_parameters<V, internal_np::NAME##_t, Chain> NAME(const V& v) const                     \
+  {                                                                                            \
+    return Named_parameters<V, internal_np::NAME##_t, Chain>(v, *this);                        \
+  }
+  /// \name Chained package parameters
+  /// Each adds the named parameter of the same name (see the free functions) to the chain.
+  /// @{
+  CGAL_DFP_CHAINED_PARAMETER(max_flips)
+  CGAL_DFP_CHAINED_PARAMETER(screen_prediction)
+  CGAL_DFP_CHAINED_PARAMETER(strategy)
+  CGAL_DFP_CHAINED_PARAMETER(region_size)
+  CGAL_DFP_CHAINED_PARAMETER(disk_order)
+  CGAL_DFP_CHAINED_PARAMETER(split_method)
+  CGAL_DFP_CHAINED_PARAMETER(sample_probability)
+  /// @}
+#undef CGAL_DFP_CHAINED_PARAMETER
+};
+
 /// limits the number of edge flips; past it the call finishes with a from-scratch build.
 /// \param v the largest number of flips (a `std::size_t`).
 /// \returns the named parameter `max_flips` with value `v`.
 template <class T>
-CGAL::Named_function_parameters<T, internal_np::max_flips_t> max_flips(const T& v)
+Named_parameters<T, internal_np::max_flips_t> max_flips(const T& v)
 {
-  return CGAL::Named_function_parameters<T, internal_np::max_flips_t>(v);
+  return Named_parameters<T, internal_np::max_flips_t>(v);
 }
 /// same, chained in front of other named parameters.
 /// \param v the value of the parameter.
 /// \param np the named parameters to chain after it.
 /// \returns the chain `v`, then `np`.
 template <class T, class A, class B, class C>
-CGAL::Named_function_parameters<T, internal_np::max_flips_t, CGAL::Named_function_parameters<A, B, C>>
+Named_parameters<T, internal_np::max_flips_t, CGAL::Named_function_parameters<A, B, C>>
 max_flips(const T& v, const CGAL::Named_function_parameters<A, B, C>& np)
 {
-  return CGAL::Named_function_parameters<T, internal_np::max_flips_t,
+  return Named_parameters<T, internal_np::max_flips_t,
                                          CGAL::Named_function_parameters<A, B, C>>(v, np);
 }
 
@@ -146,19 +190,19 @@ max_flips(const T& v, const CGAL::Named_function_parameters<A, B, C>& np)
 /// \param v `true` to screen the prediction (a `bool`).
 /// \returns the named parameter `screen_prediction` with value `v`.
 template <class T>
-CGAL::Named_function_parameters<T, internal_np::screen_prediction_t> screen_prediction(const T& v)
+Named_parameters<T, internal_np::screen_prediction_t> screen_prediction(const T& v)
 {
-  return CGAL::Named_function_parameters<T, internal_np::screen_prediction_t>(v);
+  return Named_parameters<T, internal_np::screen_prediction_t>(v);
 }
 /// same, chained in front of other named parameters.
 /// \param v the value of the parameter.
 /// \param np the named parameters to chain after it.
 /// \returns the chain `v`, then `np`.
 template <class T, class A, class B, class C>
-CGAL::Named_function_parameters<T, internal_np::screen_prediction_t, CGAL::Named_function_parameters<A, B, C>>
+Named_parameters<T, internal_np::screen_prediction_t, CGAL::Named_function_parameters<A, B, C>>
 screen_prediction(const T& v, const CGAL::Named_function_parameters<A, B, C>& np)
 {
-  return CGAL::Named_function_parameters<T, internal_np::screen_prediction_t,
+  return Named_parameters<T, internal_np::screen_prediction_t,
                                          CGAL::Named_function_parameters<A, B, C>>(v, np);
 }
 
@@ -166,19 +210,19 @@ screen_prediction(const T& v, const CGAL::Named_function_parameters<A, B, C>& np
 /// \param v a `Strategy`.
 /// \returns the named parameter `strategy` with value `v`.
 template <class T>
-CGAL::Named_function_parameters<T, internal_np::strategy_t> strategy(const T& v)
+Named_parameters<T, internal_np::strategy_t> strategy(const T& v)
 {
-  return CGAL::Named_function_parameters<T, internal_np::strategy_t>(v);
+  return Named_parameters<T, internal_np::strategy_t>(v);
 }
 /// same, chained in front of other named parameters.
 /// \param v the value of the parameter.
 /// \param np the named parameters to chain after it.
 /// \returns the chain `v`, then `np`.
 template <class T, class A, class B, class C>
-CGAL::Named_function_parameters<T, internal_np::strategy_t, CGAL::Named_function_parameters<A, B, C>>
+Named_parameters<T, internal_np::strategy_t, CGAL::Named_function_parameters<A, B, C>>
 strategy(const T& v, const CGAL::Named_function_parameters<A, B, C>& np)
 {
-  return CGAL::Named_function_parameters<T, internal_np::strategy_t,
+  return Named_parameters<T, internal_np::strategy_t,
                                          CGAL::Named_function_parameters<A, B, C>>(v, np);
 }
 
@@ -188,19 +232,19 @@ strategy(const T& v, const CGAL::Named_function_parameters<A, B, C>& np)
 /// \param v the region size (a `std::size_t`).
 /// \returns the named parameter `region_size` with value `v`.
 template <class T>
-CGAL::Named_function_parameters<T, internal_np::region_size_t> region_size(const T& v)
+Named_parameters<T, internal_np::region_size_t> region_size(const T& v)
 {
-  return CGAL::Named_function_parameters<T, internal_np::region_size_t>(v);
+  return Named_parameters<T, internal_np::region_size_t>(v);
 }
 /// same, chained in front of other named parameters.
 /// \param v the value of the parameter.
 /// \param np the named parameters to chain after it.
 /// \returns the chain `v`, then `np`.
 template <class T, class A, class B, class C>
-CGAL::Named_function_parameters<T, internal_np::region_size_t, CGAL::Named_function_parameters<A, B, C>>
+Named_parameters<T, internal_np::region_size_t, CGAL::Named_function_parameters<A, B, C>>
 region_size(const T& v, const CGAL::Named_function_parameters<A, B, C>& np)
 {
-  return CGAL::Named_function_parameters<T, internal_np::region_size_t,
+  return Named_parameters<T, internal_np::region_size_t,
                                          CGAL::Named_function_parameters<A, B, C>>(v, np);
 }
 
@@ -208,38 +252,38 @@ region_size(const T& v, const CGAL::Named_function_parameters<A, B, C>& np)
 /// \param v a `Disk_order`.
 /// \returns the named parameter `disk_order` with value `v`.
 template <class T>
-CGAL::Named_function_parameters<T, internal_np::disk_order_t> disk_order(const T& v)
+Named_parameters<T, internal_np::disk_order_t> disk_order(const T& v)
 {
-  return CGAL::Named_function_parameters<T, internal_np::disk_order_t>(v);
+  return Named_parameters<T, internal_np::disk_order_t>(v);
 }
 /// same, chained in front of other named parameters.
 /// \param v the value of the parameter.
 /// \param np the named parameters to chain after it.
 /// \returns the chain `v`, then `np`.
 template <class T, class A, class B, class C>
-CGAL::Named_function_parameters<T, internal_np::disk_order_t, CGAL::Named_function_parameters<A, B, C>>
+Named_parameters<T, internal_np::disk_order_t, CGAL::Named_function_parameters<A, B, C>>
 disk_order(const T& v, const CGAL::Named_function_parameters<A, B, C>& np)
 {
-  return CGAL::Named_function_parameters<T, internal_np::disk_order_t, CGAL::Named_function_parameters<A, B, C>>(v,
+  return Named_parameters<T, internal_np::disk_order_t, CGAL::Named_function_parameters<A, B, C>>(v,
                                                                                                                  np);
 }
 /// chooses how `split_delaunay()` works, see `Split_method`.
 /// \param v a `Split_method`.
 /// \returns the named parameter `split_method` with value `v`.
 template <class T>
-CGAL::Named_function_parameters<T, internal_np::split_method_t> split_method(const T& v)
+Named_parameters<T, internal_np::split_method_t> split_method(const T& v)
 {
-  return CGAL::Named_function_parameters<T, internal_np::split_method_t>(v);
+  return Named_parameters<T, internal_np::split_method_t>(v);
 }
 /// same, chained in front of other named parameters.
 /// \param v the value of the parameter.
 /// \param np the named parameters to chain after it.
 /// \returns the chain `v`, then `np`.
 template <class T, class A, class B, class C>
-CGAL::Named_function_parameters<T, internal_np::split_method_t, CGAL::Named_function_parameters<A, B, C>>
+Named_parameters<T, internal_np::split_method_t, CGAL::Named_function_parameters<A, B, C>>
 split_method(const T& v, const CGAL::Named_function_parameters<A, B, C>& np)
 {
-  return CGAL::Named_function_parameters<T, internal_np::split_method_t, CGAL::Named_function_parameters<A, B, C>>(
+  return Named_parameters<T, internal_np::split_method_t, CGAL::Named_function_parameters<A, B, C>>(
       v, np);
 }
 /// sets the probability with which `brio_dc_delaunay()` puts in the next sample a point that is
@@ -247,19 +291,19 @@ split_method(const T& v, const CGAL::Named_function_parameters<A, B, C>& np)
 /// \param v a probability in \f$(0, 1]\f$ (a `double`).
 /// \returns the named parameter `sample_probability` with value `v`.
 template <class T>
-CGAL::Named_function_parameters<T, internal_np::sample_probability_t> sample_probability(const T& v)
+Named_parameters<T, internal_np::sample_probability_t> sample_probability(const T& v)
 {
-  return CGAL::Named_function_parameters<T, internal_np::sample_probability_t>(v);
+  return Named_parameters<T, internal_np::sample_probability_t>(v);
 }
 /// same, chained in front of other named parameters.
 /// \param v the value of the parameter.
 /// \param np the named parameters to chain after it.
 /// \returns the chain `v`, then `np`.
 template <class T, class A, class B, class C>
-CGAL::Named_function_parameters<T, internal_np::sample_probability_t, CGAL::Named_function_parameters<A, B, C>>
+Named_parameters<T, internal_np::sample_probability_t, CGAL::Named_function_parameters<A, B, C>>
 sample_probability(const T& v, const CGAL::Named_function_parameters<A, B, C>& np)
 {
-  return CGAL::Named_function_parameters<T, internal_np::sample_probability_t,
+  return Named_parameters<T, internal_np::sample_probability_t,
                                          CGAL::Named_function_parameters<A, B, C>>(v, np);
 }
 } // namespace parameters
