@@ -118,6 +118,9 @@ writes `s` to `out`, one `name: value` line per member, named as the members are
 `faces_in`, `faces_certified`, `flips`, `points_reinserted` and `fell_back` (`true` or
 `false`), then every other count that is not 0, the flag `input_reordered` when set, and
 `fallback_reason` when the prediction was not used as it is.
+\param out the stream.
+\param s the statistics.
+\returns `out`.
 */
 inline std::ostream& operator<<(std::ostream& out, const Statistics& s)
 {

@@ -16,6 +16,7 @@
 #include <CGAL/Delaunay_from_prediction/internal/prediction_measures.h>
 #include <CGAL/Delaunay_from_prediction/internal/random.h>
 #include <CGAL/Delaunay_from_prediction/internal/rebuild.h>
+#include <CGAL/Delaunay_from_prediction/internal/vertex_info.h>
 
 #include <CGAL/Kernel_traits.h>
 
@@ -101,16 +102,6 @@ auto indexed_delaunay(const PointRange& points)
   Statistics ignored;
   build_from_scratch(dt, std::begin(points), n, ignored);
   return dt;
-}
-
-template <class DT>
-std::vector<std::array<std::size_t, 3>> faces_of(const DT& dt)
-{
-  std::vector<std::array<std::size_t, 3>> faces;
-  if(dt.dimension() == 2)
-    for(auto f = dt.finite_faces_begin(); f != dt.finite_faces_end(); ++f)
-      faces.push_back({f->vertex(0)->info(), f->vertex(1)->info(), f->vertex(2)->info()});
-  return faces;
 }
 
 inline void check_probability(double rho, const char* what)

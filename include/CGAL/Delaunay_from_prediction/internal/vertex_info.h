@@ -8,9 +8,11 @@
 #ifndef CGAL_DELAUNAY_FROM_PREDICTION_INTERNAL_VERTEX_INFO_H
 #define CGAL_DELAUNAY_FROM_PREDICTION_INTERNAL_VERTEX_INFO_H
 
+#include <array>
 #include <cstddef>
 #include <type_traits>
 #include <utility>
+#include <vector>
 
 namespace CGAL {
 namespace Delaunay_from_prediction {
@@ -76,6 +78,30 @@ void copy_info(FromHandle from, ToHandle to)
 {
   if constexpr(can_copy_info<std::decay_t<decltype(*from)>, std::decay_t<decltype(*to)>>::value)
     to->info() = from->info();
+}
+
+// The finite faces of `dt` as triples of the vertices' info() (point indices), counter-
+// clockwise; none below dimension 2.
+template <class DT>
+std::vector<std::array<std::size_t, 3>> faces_of(const DT& dt)
+{
+  std::vector<std::array<std::size_t, 3>> faces;
+  if(dt.dimension() == 2) {
+    faces.reserve(dt.number_of_faces());
+    for(auto f = dt.finite_faces_begin(); f != dt.finite_faces_end(); ++f)
+      faces.push_back({f->vertex(0)->info(), f->vertex(1)->info(), f->vertex(2)->info()});
+  }
+  return faces;
+}
+
+// The finite edges of `dt` as pairs of the vertices' info(), each once (dimension 1 included).
+template <class DT>
+std::vector<std::array<std::size_t, 2>> edges_of(const DT& dt)
+{
+  std::vector<std::array<std::size_t, 2>> edges;
+  for(auto e = dt.finite_edges_begin(); e != dt.finite_edges_end(); ++e)
+    edges.push_back({e->first->vertex(dt.cw(e->second))->info(), e->first->vertex(dt.ccw(e->second))->info()});
+  return edges;
 }
 
 } // namespace internal

@@ -1,0 +1,485 @@
+// Copyright (c) 2026 Delaunay_from_prediction contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Author(s): Delaunay_from_prediction founding team
+//
+// dfp: the package's command-line tool. `dfp triangulate` reads points and, optionally, a
+// prediction of their Delaunay triangulation from files, computes the triangulation with
+// delaunay_from_prediction() and writes it; `dfp kinetic` repairs one triangulation through a
+// sequence of point frames with make_delaunay(). `dfp --help` tells the rest.
+//
+// Exit status: 0 on success, 1 for an input or output error (the message names the file and
+// the line), 2 for a wrong command line, 3 when --check finds a difference with CGAL's build.
+
+#include <CGAL/Delaunay_from_predicted_edges_2.h>
+#include <CGAL/Delaunay_from_prediction/file_io.h>
+#include <CGAL/Delaunay_from_prediction_2.h>
+
+#include <CGAL/Delaunay_triangulation_2.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Triangulation_data_structure_2.h>
+#include <CGAL/Triangulation_vertex_base_with_info_2.h>
+
+#ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/global_control.h>
+#include <thread>
+#endif
+
+#if defined(__linux__) && defined(__GLIBC__)
+#include <unistd.h>
+#endif
+
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <cstddef>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <exception>
+#include <fstream>
+#include <iostream>
+#include <memory>
+#include <new>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace {
+
+using K = CGAL::Exact_predicates_inexact_constructions_kernel;
+using Point = K::Point_2;
+using Vb = CGAL::Triangulation_vertex_base_with_info_2<std::size_t, K>;
+using Tds = CGAL::Triangulation_data_structure_2<Vb>;
+using DT = CGAL::Delaunay_triangulation_2<K, Tds>;
+namespace DFP = CGAL::Delaunay_from_prediction;
+namespace IO = CGAL::Delaunay_from_prediction::IO;
+
+const char* const usage_text =
+    "usage: dfp triangulate POINTS [--prediction FACES] -o OUT [options]\n"
+    "       dfp kinetic FRAME... [--prediction FACES] [-o OUT] [options]\n"
+    "       dfp --help | --version\n"
+    "\n"
+    "triangulate  computes the Delaunay triangulation of POINTS, using FACES (if given) as a\n"
+    "             prediction of it, and writes it to OUT.\n"
+    "kinetic      triangulates the first frame (using FACES if given), then moves its vertices\n"
+    "             to each next frame's points and repairs the triangulation in place. Every\n"
+    "             frame has the same number of points, the same point in the same place.\n"
+    "             OUT with '{}' writes every frame ('{}' becomes the frame number, from 0);\n"
+    "             without, the last frame only.\n"
+    "\n"
+    "POINTS, FRAME  Triangle .node (numbered from 0 or 1), .off (z ignored), or plain text\n"
+    "               (any other extension, e.g. .xyz): one 'x y' or 'x y z' per line.\n"
+    "FACES          .ele or .off faces (a polygon is read as a fan of triangles), or a .edge\n"
+    "               edge list (Triangle's formats; the indices numbered as the file's items).\n"
+    "OUT            by extension: .ele (numbered as the .node, else from 0), .off, or .edge\n"
+    "               (the edges: the only output that holds collinear points' triangulation).\n"
+    "In every file, '#' starts a comment and commas count as blanks.\n"
+    "\n"
+    "options:\n"
+    "  --stats            print what the call did (the package's Statistics) and the times\n"
+    "  --check            compare the result with CGAL's Delaunay_triangulation_2 built from\n"
+    "                     scratch; exit status 3 if they differ\n"
+    "  --threads N        run on N threads (0: all cores; default 1); the result is the same\n"
+    "  --strategy NAME    automatic (default), flips, carve, t_division, regions, rebuild,\n"
+    "                     spanning_tree: see the manual\n"
+    "  --cgal             ignore the prediction and build with CGAL's Delaunay_triangulation_2\n"
+    "                     (range insertion), for comparisons\n"
+    "  --quiet            no progress lines on stderr (printed for files over 64 MiB)\n";
+
+struct Usage_error
+{
+  std::string message;
+};
+
+struct Options
+{
+  std::string command;
+  std::vector<std::string> inputs;
+  std::string prediction;
+  std::string output;
+  bool stats = false;
+  bool check = false;
+  bool cgal = false;
+  bool quiet = false;
+  long threads = 1;
+  DFP::Strategy strategy = DFP::Strategy::automatic;
+};
+
+DFP::Strategy strategy_named(const std::string& name)
+{
+  const std::pair<const char*, DFP::Strategy> names[] = {
+      {"automatic", DFP::Strategy::automatic}, {"flips", DFP::Strategy::flips},
+      {"carve", DFP::Strategy::carve},         {"t_division", DFP::Strategy::t_division},
+      {"regions", DFP::Strategy::regions},     {"rebuild", DFP::Strategy::rebuild},
+      {"spanning_tree", DFP::Strategy::spanning_tree}};
+  for(const auto& n : names)
+    if(name == n.first)
+      return n.second;
+  throw Usage_error{"unknown strategy '" + name + "'"};
+}
+
+Options parse_command_line(int argc, char** argv)
+{
+  Options o;
+  if(argc < 2)
+    throw Usage_error{"no command"};
+  o.command = argv[1];
+  if(o.command != "triangulate" && o.command != "kinetic")
+    throw Usage_error{"unknown command '" + o.command + "'"};
+  for(int i = 2; i < argc; ++i) {
+    const std::string a = argv[i];
+    auto value = [&]() -> std::string {
+      if(i + 1 >= argc)
+        throw Usage_error{a + " needs a value"};
+      return argv[++i];
+    };
+    if(a == "--prediction")
+      o.prediction = value();
+    else if(a == "-o" || a == "--output")
+      o.output = value();
+    else if(a == "--stats")
+      o.stats = true;
+    else if(a == "--check")
+      o.check = true;
+    else if(a == "--cgal")
+      o.cgal = true;
+    else if(a == "--quiet")
+      o.quiet = true;
+    else if(a == "--strategy")
+      o.strategy = strategy_named(value());
+    else if(a == "--threads") {
+      const std::string v = value();
+      char* end = nullptr;
+      o.threads = std::strtol(v.c_str(), &end, 10);
+      if(v.empty() || *end != '\0' || o.threads < 0)
+        throw Usage_error{"--threads needs a non-negative integer, not '" + v + "'"};
+    } else if(a.size() > 1 && a[0] == '-')
+      throw Usage_error{"unknown option '" + a + "'"};
+    else
+      o.inputs.push_back(a);
+  }
+  if(o.command == "triangulate") {
+    if(o.inputs.size() != 1)
+      throw Usage_error{"triangulate takes one POINTS file"};
+    if(o.output.empty())
+      throw Usage_error{"triangulate needs -o OUT"};
+  } else if(o.inputs.empty())
+    throw Usage_error{"kinetic needs at least one FRAME file"};
+  if(!o.output.empty() && IO::file_format(o.output) == IO::File_format::node)
+    throw Usage_error{"OUT is a .ele, .off or .edge file, not '" + o.output + "'"};
+  if(!o.output.empty() && IO::file_format(o.output) == IO::File_format::xyz)
+    throw Usage_error{"OUT is a .ele, .off or .edge file (by its extension), not '" + o.output + "'"};
+  return o;
+}
+
+double seconds_since(std::chrono::steady_clock::time_point start)
+{
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+// Progress lines on stderr, only for large files (over 64 MiB of points: several seconds).
+struct Progress
+{
+  bool on = false;
+  std::chrono::steady_clock::time_point start = std::chrono::steady_clock::now();
+
+  void say(const std::string& what) const
+  {
+    if(on)
+      std::fprintf(stderr, "dfp: %7.1f s  %s\n", seconds_since(start), what.c_str());
+  }
+};
+
+long long file_size(const std::string& file)
+{
+  std::ifstream in(file, std::ios::binary | std::ios::ate);
+  return in ? static_cast<long long>(in.tellg()) : -1;
+}
+
+// A prediction read from a file: triangles, or edges for a .edge file.
+struct Prediction
+{
+  std::vector<std::array<std::size_t, 3>> faces;
+  std::vector<std::array<std::size_t, 2>> edges;
+  bool has_edges = false;
+};
+
+Prediction read_prediction(const std::string& file, std::size_t n)
+{
+  Prediction p;
+  if(file.empty())
+    return p;
+  if(IO::file_format(file) == IO::File_format::edge) {
+    p.edges = IO::read_edges(file, n);
+    p.has_edges = true;
+  } else if(IO::file_format(file) == IO::File_format::ele || IO::file_format(file) == IO::File_format::off)
+    p.faces = IO::read_faces(file, n);
+  else
+    throw IO::File_error(file, 0, "a prediction is a .ele, .off or .edge file");
+  return p;
+}
+
+// CGAL's own build from scratch: the reference of --check, and what --cgal runs.
+void build_with_cgal(const std::vector<Point>& points, DT& dt)
+{
+  std::vector<std::pair<Point, std::size_t>> indexed;
+  indexed.reserve(points.size());
+  for(std::size_t i = 0; i < points.size(); ++i)
+    indexed.emplace_back(points[i], i);
+  dt.clear();
+  dt.insert(indexed.begin(), indexed.end());
+}
+
+// The faces and edges of `dt` by the coordinates of their points, in a canonical order (a
+// face starts at its smallest point, which keeps its orientation): two triangulations of the
+// same points are the same iff these are equal, whichever index represents duplicate points.
+using Coordinates = std::pair<double, double>;
+std::pair<std::vector<std::array<Coordinates, 3>>, std::vector<std::array<Coordinates, 2>>> geometry_of(const DT& dt)
+{
+  auto at = [](DT::Vertex_handle v) { return Coordinates(v->point().x(), v->point().y()); };
+  std::vector<std::array<Coordinates, 3>> faces;
+  if(dt.dimension() == 2)
+    for(auto f = dt.finite_faces_begin(); f != dt.finite_faces_end(); ++f) {
+      std::array<Coordinates, 3> t = {at(f->vertex(0)), at(f->vertex(1)), at(f->vertex(2))};
+      std::rotate(t.begin(), std::min_element(t.begin(), t.end()), t.end());
+      faces.push_back(t);
+    }
+  std::vector<std::array<Coordinates, 2>> edges;
+  for(auto e = dt.finite_edges_begin(); e != dt.finite_edges_end(); ++e) {
+    std::array<Coordinates, 2> s = {at(e->first->vertex(dt.cw(e->second))), at(e->first->vertex(dt.ccw(e->second)))};
+    if(s[1] < s[0])
+      std::swap(s[0], s[1]);
+    edges.push_back(s);
+  }
+  std::sort(faces.begin(), faces.end());
+  std::sort(edges.begin(), edges.end());
+  return {faces, edges};
+}
+
+// True if `dt` is CGAL's Delaunay triangulation of `points`.
+bool equals_cgal_build(const std::vector<Point>& points, const DT& dt)
+{
+  DT reference;
+  build_with_cgal(points, reference);
+  return geometry_of(dt) == geometry_of(reference);
+}
+
+void print_statistics(const DFP::Statistics& s, double read_s, double triangulate_s, double write_s,
+                      const DT& dt, std::size_t n)
+{
+  std::cout << "points: " << n << "\nvertices: " << dt.number_of_vertices()
+            << "\ntriangles: " << (dt.dimension() == 2 ? dt.number_of_faces() : 0) << "\n"
+            << s << "time_read_s: " << read_s << "\ntime_triangulate_s: " << triangulate_s
+            << "\ntime_write_s: " << write_s << "\n";
+}
+
+// `pattern` with its "{}" replaced by `frame`; `pattern` itself when it has none.
+std::string frame_file(const std::string& pattern, std::size_t frame)
+{
+  const std::size_t at = pattern.find("{}");
+  if(at == std::string::npos)
+    return pattern;
+  return pattern.substr(0, at) + std::to_string(frame) + pattern.substr(at + 2);
+}
+
+template <class Tag>
+DFP::Statistics triangulate(const std::vector<Point>& points, const Prediction& prediction, DT& dt,
+                            const Options& o)
+{
+  if(o.cgal) {
+    build_with_cgal(points, dt);
+    DFP::Statistics s;
+    s.points_reinserted = points.size();
+    s.fell_back = true;
+    s.fallback_reason = "--cgal: CGAL's own build";
+    return s;
+  }
+  const auto np = DFP::parameters::strategy(o.strategy);
+  if(prediction.has_edges)
+    return DFP::delaunay_from_predicted_edges<Tag>(points, prediction.edges, dt, np);
+  return DFP::delaunay_from_prediction<Tag>(points, prediction.faces, dt, np);
+}
+
+template <class Tag>
+int run_triangulate(const Options& o)
+{
+  Progress progress;
+  progress.on = !o.quiet && file_size(o.inputs[0]) > (64ll << 20);
+  const auto start = std::chrono::steady_clock::now();
+  progress.say("reading " + o.inputs[0]);
+  std::vector<Point> points;
+  const std::size_t first_index = IO::read_points(o.inputs[0], points);
+  if(!o.prediction.empty())
+    progress.say("reading " + o.prediction);
+  const Prediction prediction = read_prediction(o.prediction, points.size());
+  const double read_s = seconds_since(start);
+
+  progress.say("triangulating " + std::to_string(points.size()) + " points");
+  const auto built = std::chrono::steady_clock::now();
+  DT dt;
+  const DFP::Statistics s = triangulate<Tag>(points, prediction, dt, o);
+  const double triangulate_s = seconds_since(built);
+
+  progress.say("writing " + o.output);
+  const auto written = std::chrono::steady_clock::now();
+  IO::write_triangulation(o.output, points, dt, first_index);
+  const double write_s = seconds_since(written);
+  progress.say("done");
+
+  if(o.stats)
+    print_statistics(s, read_s, triangulate_s, write_s, dt, points.size());
+  if(o.check) {
+    if(!equals_cgal_build(points, dt)) {
+      std::cerr << "dfp: --check: the result differs from CGAL's Delaunay_triangulation_2\n";
+      return 3;
+    }
+    std::cerr << "dfp: --check: the result is CGAL's Delaunay triangulation\n";
+  }
+  return 0;
+}
+
+template <class Tag>
+int run_kinetic(const Options& o)
+{
+  std::vector<Point> points;
+  const std::size_t first_index = IO::read_points(o.inputs[0], points);
+  const std::size_t n = points.size();
+  DT dt;
+  DFP::Statistics s = triangulate<Tag>(points, read_prediction(o.prediction, n), dt, o);
+  // One vertex per point index, to move them; duplicate points share a vertex and cannot move
+  // apart in place: such frames are built again, with the previous faces as the prediction.
+  std::vector<DT::Vertex_handle> vertex_of(n);
+  bool in_place = false;
+  auto record_vertices = [&]() {
+    std::size_t recorded = 0;
+    for(auto v = dt.finite_vertices_begin(); v != dt.finite_vertices_end(); ++v, ++recorded)
+      vertex_of[v->info()] = v;
+    in_place = recorded == n;
+  };
+  record_vertices();
+
+  int status = 0;
+  for(std::size_t frame = 0; frame < o.inputs.size(); ++frame) {
+    const auto start = std::chrono::steady_clock::now();
+    double read_s = 0;
+    if(frame > 0) {
+      std::vector<Point> next;
+      IO::read_points(o.inputs[frame], next);
+      if(next.size() != n)
+        throw IO::File_error(o.inputs[frame], 0,
+                             "the frame has " + std::to_string(next.size()) + " points, the first frame " +
+                                 std::to_string(n));
+      points.swap(next);
+      read_s = seconds_since(start);
+      const auto repair = std::chrono::steady_clock::now();
+      bool rebuilt = !in_place;
+      if(in_place) {
+        for(std::size_t i = 0; i < n; ++i)
+          vertex_of[i]->set_point(points[i]);
+        try {
+          s = DFP::make_delaunay<Tag>(dt, DFP::parameters::strategy(o.strategy));
+        } catch(const DFP::Invalid_prediction&) {
+          rebuilt = true; // two points met: the triangulation loses a vertex
+        }
+      }
+      if(rebuilt) {
+        Prediction previous;
+        previous.faces = DFP::internal::faces_of(dt);
+        DT next_dt;
+        s = triangulate<Tag>(points, previous, next_dt, o);
+        dt.swap(next_dt);
+        record_vertices();
+      }
+      if(o.stats)
+        std::cout << "frame " << frame << ": read_s " << read_s << " repair_s " << seconds_since(repair)
+                  << " flips " << s.flips << " faces_certified " << s.faces_certified << "/" << s.faces_in
+                  << " points_reinserted " << s.points_reinserted << (rebuilt ? " rebuilt" : "")
+                  << (s.fell_back ? " fell_back" : "") << "\n";
+    } else if(o.stats)
+      std::cout << "frame 0: built, faces_certified " << s.faces_certified << "/" << s.faces_in << " flips "
+                << s.flips << " points_reinserted " << s.points_reinserted << (s.fell_back ? " fell_back" : "")
+                << "\n";
+    if(!o.output.empty() && (o.output.find("{}") != std::string::npos || frame + 1 == o.inputs.size()))
+      IO::write_triangulation(frame_file(o.output, frame), points, dt, first_index);
+    if(o.check && !equals_cgal_build(points, dt)) {
+      std::cerr << "dfp: --check: frame " << frame << " (" << o.inputs[frame]
+                << ") differs from CGAL's Delaunay_triangulation_2\n";
+      status = 3;
+    }
+  }
+  if(o.check && status == 0)
+    std::cerr << "dfp: --check: every frame is CGAL's Delaunay triangulation\n";
+  return status;
+}
+
+template <class Tag>
+int run(const Options& o)
+{
+  return o.command == "triangulate" ? run_triangulate<Tag>(o) : run_kinetic<Tag>(o);
+}
+
+// The first touch of a 4 KiB page costs a page fault, and a triangulation of 10^6 points
+// touches some 70,000 of them: on the virtual machines measured (13 us a fault) that was more
+// than the triangulation itself. glibc (2.35 on) backs its large blocks with transparent huge
+// pages (2 MiB, where the kernel allows them on request: Debian's default) when the tunable
+// glibc.malloc.hugetlb=1 is set, which is read only when a program starts: so dfp starts
+// itself again once with it. DFP_NO_HUGE_PAGES=1 keeps the process as it is.
+void restart_with_huge_pages(char** argv)
+{
+#if defined(__linux__) && defined(__GLIBC__)
+  const char* tunables = std::getenv("GLIBC_TUNABLES");
+  if(std::getenv("DFP_NO_HUGE_PAGES") != nullptr ||
+     (tunables != nullptr && std::strstr(tunables, "glibc.malloc.hugetlb") != nullptr))
+    return;
+  const std::string value =
+      tunables != nullptr && tunables[0] != '\0' ? std::string(tunables) + ":glibc.malloc.hugetlb=1" : "glibc.malloc.hugetlb=1";
+  if(setenv("GLIBC_TUNABLES", value.c_str(), 1) == 0)
+    execv("/proc/self/exe", argv); // returns only if it failed: then go on as we are
+#else
+  (void)argv;
+#endif
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+  restart_with_huge_pages(argv);
+  if(argc >= 2 && (std::string(argv[1]) == "--help" || std::string(argv[1]) == "-h" ||
+                   std::string(argv[1]) == "help")) {
+    std::cout << usage_text;
+    return 0;
+  }
+  if(argc >= 2 && std::string(argv[1]) == "--version") {
+    std::cout << "dfp (Delaunay_from_prediction) 1.0.0\n";
+    return 0;
+  }
+  try {
+    const Options o = parse_command_line(argc, argv);
+    if(o.threads == 1)
+      return run<CGAL::Sequential_tag>(o);
+#ifdef CGAL_LINKED_WITH_TBB
+    const std::size_t threads = o.threads == 0 ? std::max(1u, std::thread::hardware_concurrency()) : std::size_t(o.threads);
+    tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
+    return run<CGAL::Parallel_tag>(o);
+#else
+    std::cerr << "dfp: built without TBB: --threads is ignored, running on one thread\n";
+    return run<CGAL::Sequential_tag>(o);
+#endif
+  } catch(const Usage_error& e) {
+    std::cerr << "dfp: " << e.message << "\n\n" << usage_text;
+    return 2;
+  } catch(const IO::File_error& e) {
+    std::cerr << "dfp: " << e.what() << "\n";
+    return 1;
+  } catch(const DFP::Invalid_prediction& e) {
+    std::cerr << "dfp: " << e.what() << "\n";
+    return 1;
+  } catch(const std::bad_alloc&) {
+    std::cerr << "dfp: out of memory\n";
+    return 1;
+  } catch(const std::exception& e) {
+    std::cerr << "dfp: " << e.what() << "\n";
+    return 1;
+  }
+}
