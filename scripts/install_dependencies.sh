@@ -1,9 +1,15 @@
 #!/usr/bin/env bash
 # Installs the Debian packages the project builds with, only those missing (apt-get, with
-# sudo when not root). Sourced by demo.sh and test.sh.
+# sudo when not root). Called by the scripts that build (test.sh, demo.sh, ...); with package names as
+# arguments it installs those instead (doc.sh: doxygen and libjs-mathjax).
 set -euo pipefail
 
-packages=(cmake g++ libcgal-dev libboost-dev libgmp-dev libmpfr-dev libtbb-dev)
+# pybind11-dev, python3-dev, python3-numpy: the Python module; python3-scipy, python3-pytest: its tests.
+packages=(cmake g++ libcgal-dev libboost-dev libgmp-dev libmpfr-dev libtbb-dev
+          pybind11-dev python3-dev python3-numpy python3-scipy python3-pytest)
+if (($#)); then
+  packages=("$@")
+fi
 missing=()
 for p in "${packages[@]}"; do
   status=$(dpkg-query -W -f='${Status}' "$p" 2>/dev/null || true)
