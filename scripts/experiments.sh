@@ -41,7 +41,7 @@ if [ "$status" != "install ok installed" ] && ! command -v gnuplot >/dev/null; t
   "${sudo[@]}" env DEBIAN_FRONTEND=noninteractive apt-get install -y --no-install-recommends gnuplot-nox
 fi
 
-cmake -S . -B build -DCMAKE_BUILD_TYPE=Release
+cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DDFP_BUILD_BENCHMARKS=ON
 cmake --build build -j2 --target experiment_prediction_quality
 cmake --build build -j2 --target figure_carved_prediction
 

@@ -32,7 +32,8 @@ cmake -S . -B build-sanitize -DCMAKE_BUILD_TYPE=Debug \
   -DCGAL_DO_NOT_WARN_ABOUT_CMAKE_BUILD_TYPE=TRUE
 cmake --build build-sanitize -j2
 if [ -n "$tests" ]; then
-  only="^(compilation_of__|execution___of__)($(echo $tests | tr ' ' '|'))\$"
+  # dfp_command_line: the tool dfp (built whenever DFP_BUILD_CLI is on) on files.
+  only="^(compilation_of__|execution___of__)($(echo $tests | tr ' ' '|'))\$|^dfp_command_line\$"
 else
   only=""
 fi
