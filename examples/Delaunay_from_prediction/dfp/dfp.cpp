@@ -419,8 +419,8 @@ int run(const Options& o)
 }
 
 // The first touch of a 4 KiB page costs a page fault, and a triangulation of 10^6 points
-// touches some 70,000 of them: on the virtual machines measured (13 us a fault) that was more
-// than the triangulation itself. glibc (2.35 on) backs its large blocks with transparent huge
+// touches some 87,000 of them: on the virtual machine measured, huge pages (about 7,000 faults)
+// took the D = 0 run from 3.0 s to under 2 s (results/issue25_dfp_cli.txt). glibc (2.35 on) backs its large blocks with transparent huge
 // pages (2 MiB, where the kernel allows them on request: Debian's default) when the tunable
 // glibc.malloc.hugetlb=1 is set, which is read only when a program starts: so dfp starts
 // itself again once with it. DFP_NO_HUGE_PAGES=1 keeps the process as it is.
