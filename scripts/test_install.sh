@@ -6,7 +6,9 @@
 #     the example from_indexed_faces.cpp (it returns 0 only if its results equal CGAL's) and a
 #     CGAL::Parallel_tag call;
 #  3. the same example through add_subdirectory() of the repository;
-#  4. the repository's examples folder configured on its own against the installed package.
+#  4. the repository's examples folder configured on its own against the installed package;
+#  5. when scripts/test.sh has built build/: that build installed, dfp and the Python module
+#     run from the prefix.
 # Each program is run. Installs the build dependencies with apt-get if they are missing.
 # Usage: scripts/test_install.sh   (from any directory; about 3 minutes on 2 cores)
 set -euo pipefail
@@ -111,4 +113,27 @@ cmake -S examples/Delaunay_from_prediction -B "$work/examples" -DCMAKE_BUILD_TYP
 cmake --build "$work/examples" -j2 --target moving_points > "$work/examples_build.log" ||
   { cat "$work/examples_build.log"; exit 1; }
 "$work/examples/moving_points" 20000 3 | tail -n 2
+# 5. The project's own build (build/, when scripts/test.sh has made it) installed: the tool dfp
+#    and the Python module run from the prefix, outside the build tree.
+if compgen -G "build/python/delaunay_from_prediction*.so" > /dev/null &&
+   [ -x build/examples/Delaunay_from_prediction/dfp/dfp ]; then
+  echo "== build/ installed: dfp and the Python module from the prefix"
+  cmake --install build --prefix "$work/full" > "$work/full_install.log"
+  "$work/full/bin/dfp" --help > /dev/null
+  site=$(echo "$work"/full/lib/python3.*/dist-packages)
+  (cd "$work" && PYTHONPATH="$site" /usr/bin/python3 -c '
+import numpy as np, delaunay_from_prediction as dfp
+def face_set(t):  # each triangle from its smallest index, the triangles sorted
+    first = np.argmin(t, axis=1)
+    t = np.stack([t[np.arange(len(t)), (first + k) % 3] for k in range(3)], axis=1)
+    return t[np.lexsort(t.T[::-1])]
+points = np.random.default_rng(3).random((2000, 2))
+reference = dfp.delaunay_triangulation(points)
+triangles, stats = dfp.delaunay_from_prediction(points, reference[::-1])
+assert dfp.__file__.startswith("'"$site"'"), dfp.__file__
+assert np.array_equal(face_set(triangles), face_set(reference)), "not the triangulation of CGAL"
+print("installed module:", dfp.__file__)')
+else
+  echo "== build/ installed: skipped (no build/ with dfp and the Python module: run scripts/test.sh first)"
+fi
 echo "test_install: all passed"

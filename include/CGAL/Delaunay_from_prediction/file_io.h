@@ -142,6 +142,24 @@ inline std::uint64_t numbering_base(std::uint64_t number, const Line_reader& rea
   return number;
 }
 
+// A Triangle `.ele` or `.edge` file: the count and the rest of the header line, then each
+// k-tuple of indices on a line of its own, tuples and indices numbered from `first_index`.
+template <std::size_t k, class TupleRange>
+void write_numbered_tuples(const std::string& file, const TupleRange& tuples, const char* rest_of_header,
+                           std::size_t first_index)
+{
+  CGAL::Delaunay_from_prediction::internal::Text_writer out(file);
+  out.number(std::size_t(std::distance(std::begin(tuples), std::end(tuples)))).text(rest_of_header);
+  std::size_t i = first_index;
+  for(const auto& t : tuples) {
+    out.number(i++);
+    for(std::size_t j = 0; j < k; ++j)
+      out.text(" ").number(std::size_t(t[j]) + first_index);
+    out.text("\n");
+  }
+  out.close();
+}
+
 } // namespace internal_io
 
 /*!
@@ -408,14 +426,7 @@ and indices are numbered from `first_index` (0 or 1: the numbering of the `.node
 template <class FaceRange>
 void write_ele(const std::string& file, const FaceRange& faces, std::size_t first_index = 0)
 {
-  CGAL::Delaunay_from_prediction::internal::Text_writer out(file);
-  const std::size_t f = std::size_t(std::distance(std::begin(faces), std::end(faces)));
-  out.number(f).text(" 3 0\n");
-  std::size_t i = first_index;
-  for(const auto& t : faces)
-    out.number(i++).text(" ").number(std::size_t(t[0]) + first_index).text(" ").number(std::size_t(t[1]) + first_index)
-       .text(" ").number(std::size_t(t[2]) + first_index).text("\n");
-  out.close();
+  internal_io::write_numbered_tuples<3>(file, faces, " 3 0\n", first_index);
 }
 
 /*!
@@ -430,14 +441,7 @@ writes `edges` (pairs of indices from 0) to `file` as a Triangle `.edge` file nu
 template <class EdgeRange>
 void write_edges(const std::string& file, const EdgeRange& edges, std::size_t first_index = 0)
 {
-  CGAL::Delaunay_from_prediction::internal::Text_writer out(file);
-  const std::size_t m = std::size_t(std::distance(std::begin(edges), std::end(edges)));
-  out.number(m).text(" 0\n");
-  std::size_t i = first_index;
-  for(const auto& e : edges)
-    out.number(i++).text(" ").number(std::size_t(e[0]) + first_index).text(" ").number(std::size_t(e[1]) + first_index)
-       .text("\n");
-  out.close();
+  internal_io::write_numbered_tuples<2>(file, edges, " 0\n", first_index);
 }
 
 /*!
