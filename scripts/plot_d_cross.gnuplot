@@ -6,11 +6,11 @@
 #                                 all models, with the least-squares fit a + b log2(d_cross).
 # By hand, from the repository root:
 #   build/benchmark/Delaunay_from_prediction/bench_d_cross --n 1e5,1e6 --reps 3 --rhos 0.5,0.2,0.1,0.01 \
-#       --csv benchmark/Delaunay_from_prediction/results/issue24_d_cross.csv
+#       --csv benchmark/Delaunay_from_prediction/results/d_cross.csv
 #   gnuplot -e "results='benchmark/Delaunay_from_prediction/results'; figdir='doc/Delaunay_from_prediction/fig'" \
 #           scripts/plot_d_cross.gnuplot
 # Variables: results (CSV folder), figdir (output folder), fmt ('svg', default, or 'png'),
-# csv (input file, default results.'/issue24_d_cross.csv'), nplot (the n drawn, default 1000000;
+# csv (input file, default results.'/d_cross.csv'), nplot (the n drawn, default 1000000;
 # when the file has no row with n = nplot, the largest n in the file is drawn instead; N in
 # the file names is the n drawn).
 # Times plotted are the medians over the repetitions (the only times the CSV file has), per point
@@ -19,7 +19,7 @@
 if (!exists("results")) results = 'benchmark/Delaunay_from_prediction/results'
 if (!exists("figdir")) figdir = 'doc/Delaunay_from_prediction/fig'
 if (!exists("fmt")) fmt = 'svg'
-if (!exists("csv")) csv = results.'/issue24_d_cross.csv'
+if (!exists("csv")) csv = results.'/d_cross.csv'
 if (!exists("nplot")) nplot = 1000000
 
 set encoding utf8

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # The quick start's test command: builds and runs (ctest) the core tests (the suite `core`:
-# results against CGAL's build on degenerate inputs, huge and tiny coordinates and an inexact
-# kernel, damaged predictions, make_delaunay), the examples (each checks its results against
+# results against CGAL's build on degenerate inputs with Epick and Epeck, on damaged
+# predictions, and with an inexact kernel), the examples (each checks its results against
 # CGAL's), the tool dfp on files and the Python module (pytest), in Release, in build/ at the
 # repository root. Installs the build dependencies with apt-get if they are missing.
 # With --all it builds and runs every test (the other suites, the differential fuzzer's fixed

@@ -121,17 +121,15 @@ if compgen -G "build/python/delaunay_from_prediction*.so" > /dev/null &&
   cmake --install build --prefix "$work/full" > "$work/full_install.log"
   "$work/full/bin/dfp" --help > /dev/null
   site=$(echo "$work"/full/lib/python3.*/dist-packages)
-  (cd "$work" && PYTHONPATH="$site" /usr/bin/python3 -c '
+  # The pytest suite's helpers compare the faces (test_python_module.py imports the module too).
+  (cd "$work" && PYTHONDONTWRITEBYTECODE=1 PYTHONPATH="$site:$repo/test/Delaunay_from_prediction/python" /usr/bin/python3 -c '
 import numpy as np, delaunay_from_prediction as dfp
-def face_set(t):  # each triangle from its smallest index, the triangles sorted
-    first = np.argmin(t, axis=1)
-    t = np.stack([t[np.arange(len(t)), (first + k) % 3] for k in range(3)], axis=1)
-    return t[np.lexsort(t.T[::-1])]
+from test_python_module import assert_same
 points = np.random.default_rng(3).random((2000, 2))
 reference = dfp.delaunay_triangulation(points)
 triangles, stats = dfp.delaunay_from_prediction(points, reference[::-1])
 assert dfp.__file__.startswith("'"$site"'"), dfp.__file__
-assert np.array_equal(face_set(triangles), face_set(reference)), "not the triangulation of CGAL"
+assert_same(triangles, reference)
 print("installed module:", dfp.__file__)')
 else
   echo "== build/ installed: skipped (no build/ with dfp and the Python module: run scripts/test.sh first)"

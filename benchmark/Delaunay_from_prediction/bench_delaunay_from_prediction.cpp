@@ -491,8 +491,8 @@ public:
                : r.stats.faces_carved > 0 || r.stats.holes_refilled > 0 ? "repair"
                                                                         : "predict";
       std::string check = r.ok ? "ok" : "FAILED";
-      if(r.has_stats && r.stats.fell_back && r.stats.fallback_reason && *r.stats.fallback_reason)
-        check += std::string(" (") + r.stats.fallback_reason + ")";
+      if(r.has_stats && r.stats.fell_back && r.stats.outcome != DFP::Outcome::ok)
+        check += std::string(" (") + to_string(r.stats.outcome) + ")";
       std::printf("%-9s %8zu %-8s %-24s %9.4f %9.4f %7.2f  %-8s %8zu %8zu  %s\n", r.dist.c_str(),
                   r.n, r.kase.c_str(), r.param.c_str(), tc, to, tc / to, path.c_str(),
                   r.has_stats ? r.stats.flips : 0, r.has_stats ? r.stats.edges_not_locally_delaunay : 0,
@@ -529,7 +529,7 @@ public:
         csv_ << tc << ',' << to << ',' << tc / to << ',' << join(r.cgal_times) << ','
              << join(r.our_times) << ',';
       if(r.has_stats)
-        csv_ << int(r.stats.fell_back) << ',' << csv_quote(r.stats.fallback_reason ? r.stats.fallback_reason : "")
+        csv_ << int(r.stats.fell_back) << ',' << csv_quote(to_string(r.stats.outcome))
              << ',' << r.stats.flips << ',' << r.stats.faces_in << ',' << r.stats.faces_certified << ','
              << r.stats.points_reinserted << ',' << r.stats.edges_tested << ','
              << r.stats.edges_not_locally_delaunay << ',' << r.stats.points_unused << ',';

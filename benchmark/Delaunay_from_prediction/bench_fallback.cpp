@@ -113,7 +113,7 @@ int main(int argc, char** argv)
       const double tc = median(t_cgal), trb = median(t_rebuild), ttr = median(t_tree), td = median(t_default);
       std::printf("%-9s %-20s | %8.3f %8.3f %8.3f %8.3f | %9.3f %9.2f | %s (%s)\n", dist.c_str(), prediction.c_str(), tc,
                   trb, ttr, td, ttr / trb, tc / td, same ? "same as CGAL" : "DIFFERENT",
-                  st_default.fell_back ? st_default.fallback_reason : "repaired");
+                  st_default.fell_back ? to_string(st_default.outcome) : "repaired");
       std::fflush(stdout);
     }
   }

@@ -2,13 +2,12 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Author(s): Delaunay_from_prediction contributors
 //
-// How to fill the holes of the local repair (issue 5 asks for the fastest practical choice,
-// measured). The holes `carve` makes are links of carved vertices: star-shaped polygons of
+// How to fill the holes of the local repair: the candidates timed against each other. The holes `carve` makes are links of carved vertices: star-shaped polygons of
 // about six vertices (measured at 1e6 points moved by 0.1 spacing: 48,861 carved faces in 7,757
 // holes). This program takes the link of every k-th interior vertex of the Delaunay
 // triangulation of n uniform points (the hole its carving leaves) and fills every one of them
 // with each candidate, timing the whole batch (median of --reps):
-//   ear clipping   the package's filler (internal/ear_clipping.h), scratch space reused;
+//   ear clipping   the package's filler (internal/import/hole_tracing.h), scratch space reused;
 //   DT per hole    an auxiliary CGAL Delaunay_triangulation_2 of the hole's points, built anew
 //                  for each hole (what "a small Delaunay triangulation of the hole points"
 //                  costs, before any gluing);
@@ -23,8 +22,8 @@
 
 #include "benchmark_util.h"
 
-#include <CGAL/Delaunay_from_prediction/internal/hole_tracing.h>
-#include <CGAL/Delaunay_from_prediction/internal/predicates.h>
+#include <CGAL/Delaunay_from_prediction/internal/import/hole_tracing.h>
+#include <CGAL/Delaunay_from_prediction/internal/toolbox/predicates.h>
 
 #include <cstdio>
 #include <cstdlib>

@@ -4,15 +4,16 @@
 //
 // delaunay_from_prediction() on index triples stage by stage, on one thread and with
 // CGAL::Parallel_tag in a TBB arena of --threads threads: what limits its parallel speed-up
-// (an ablation of the call into the stages it runs one after the other). The stages are
-// called as delaunay_from_prediction() calls them on its default path:
-//   read     the faces validated into 32-bit triples (read_index_triples());
-//   screens  the sampling screen and the count of missing faces;
+// (the call split into the stages it runs one after the other). The stages are those of its
+// default path, timed in one call by a visitor (Stage_timer, benchmark_util.h; DFP::Stage):
+//   check    the points checked finite, the faces validated into 32-bit triples;
+//   screen   the sampling screen, the failing edges estimated, the missing faces counted;
 //   order    the spatial reordering of points and faces, with the copy of the points;
 //   import   the import with its certificate (orientation, pairing, in-circle tests);
 //   flips    Lawson's flips of the edges that failed;
-// and a last column times the whole call on a fresh triangulation; what it spends beyond the
-// stages is the construction and swap of the result and the count of certified faces. Cases
+// and a last column times another whole call, without a visitor, on a fresh triangulation;
+// what it spends beyond the stages is the construction and swap of the result and the count of
+// certified faces. Cases
 // (1e6 uniform points by default):
 //   shuffled  D = 0: the Delaunay faces in random order, each triple as CGAL lists it;
 //   hilbert   D = 0: points Hilbert-sorted, faces in the order of CGAL's DT of them;
@@ -25,10 +26,6 @@
 
 #include "benchmark_util.h"
 
-#include <CGAL/Delaunay_from_prediction/internal/flips.h>
-#include <CGAL/Delaunay_from_prediction/internal/import_prediction.h>
-#include <CGAL/Delaunay_from_prediction/internal/input_check.h>
-#include <CGAL/Delaunay_from_prediction/internal/prediction_screens.h>
 #include <CGAL/hilbert_sort.h>
 
 #ifdef CGAL_LINKED_WITH_TBB
@@ -40,50 +37,24 @@ using namespace dfp_bench;
 namespace {
 
 constexpr int stage_count = 6;
-const char* const stage_names[stage_count] = {"read", "screens", "order", "import", "flips", "call"};
+const DFP::Stage stages[stage_count - 1] = {DFP::Stage::check, DFP::Stage::screen, DFP::Stage::order,
+                                           DFP::Stage::import, DFP::Stage::flips};
 
-// The stages of delaunay_from_prediction()'s default path, timed into `seconds[0..4]`; the
-// result in `dt`. False if the prediction does not take that path (a screen or the import
-// failed, holes to repair).
+// delaunay_from_prediction() with a Stage_timer: its stages' times into `seconds[0..4]`, the
+// result in `dt`. False if the prediction does not take the default path (a screen or the
+// import failed, holes to repair, points to insert).
 bool run_stages(const std::vector<Point>& points, const std::vector<Face>& faces, DT& dt, bool parallel,
                 double* seconds)
 {
-  namespace internal = DFP::internal;
-  const std::size_t n = points.size();
-  CGAL::Real_timer clock;
-  clock.start();
-  double last = 0;
-  auto lap = [&](int stage) {
-    const double now = clock.time();
-    seconds[stage] = now - last;
-    last = now;
-  };
-  std::vector<std::uint32_t> triples;
-  if(!internal::read_index_triples(faces, n, faces.size(), triples, parallel))
-    return false;
-  lap(0);
-  const auto& gt = dt.geom_traits();
-  if(internal::fails_sampling_screen(gt, points.begin(), n, triples) ||
-     internal::missing_faces_exceed(gt, points.begin(), n, triples, n / 8 + 16))
-    return false;
-  lap(1);
-  internal::Imported_prediction<DT> imported;
-  double import_seconds[2] = {0, 0};
-  internal::Prediction_importer<DT>::run(dt, points.begin(), n, triples, imported, true, parallel,
-                                         import_seconds);
-  clock.stop();
-  seconds[2] = import_seconds[0];
-  seconds[3] = import_seconds[1];
-  clock.start();
-  last = clock.time();
-  if(imported.failure != internal::Outcome::ok || imported.needs_repair || !imported.unused_points.empty())
-    return false;
-  std::vector<DT::Face_handle> touched;
-  std::size_t flips = 0;
-  const bool flipped =
-      internal::lawson_flip(dt, imported.not_locally_delaunay, std::size_t(-1), flips, touched, parallel);
-  lap(4);
-  return flipped;
+  Stage_timer timer;
+  const auto np = DFP::parameters::visitor(std::ref(timer));
+  if(parallel)
+    DFP::delaunay_from_prediction<CGAL::Parallel_tag>(points, faces, dt, np);
+  else
+    DFP::delaunay_from_prediction(points, faces, dt, np);
+  for(int k = 0; k < stage_count - 1; ++k)
+    seconds[k] = timer.seconds(stages[k]);
+  return !timer.saw(DFP::Stage::rebuild) && !timer.saw(DFP::Stage::carve) && !timer.saw(DFP::Stage::insert);
 }
 
 } // namespace
@@ -126,8 +97,9 @@ int main(int argc, char** argv)
   std::printf("# bench_import_stages, %s, %s, malloc policy %s, n = %zu uniform, %d threads, medians of %d\n",
               local_date_time().c_str(), build_description().c_str(), keep ? "keep" : "default", n, threads, reps);
   std::printf("%-9s %-10s |", "case", "mode");
-  for(const char* name : stage_names)
-    std::printf(" %9s", name);
+  for(const DFP::Stage stage : stages)
+    std::printf(" %9s", DFP::to_string(stage));
+  std::printf(" %9s", "call");
   std::printf(" | %s\n", "check");
   const std::vector<Point> uniform = distribution_points("uniform", n, salted_seed(0x5354, seed, "uniform", n));
   bool all_ok = true;
@@ -159,7 +131,7 @@ int main(int argc, char** argv)
           const bool ran = arena.execute([&] { return run_stages(points, faces, dt, parallel, stage); });
           staged = staged && ran;
           got = signature(dt);
-          ok = ok && (!ran || got == expected);
+          ok = ok && got == expected;
         }
         {
           DT dt;
@@ -180,8 +152,8 @@ int main(int argc, char** argv)
     print_stage_rows(kase, seconds[0], seconds[1], stage_count, staged,
                      std::string(ok ? "ok" : "DIFFERENT") + (staged ? "" : " (the call left the default path)"));
   }
-  std::printf("(seconds, medians; read + screens + order + import + flips are the stages called one by one,\n"
-              " call the whole delaunay_from_prediction() on a fresh triangulation)\n");
+  std::printf("(seconds, medians; check + screen + order + import + flips are the stages of one call, timed\n"
+              " by a visitor; call: another whole delaunay_from_prediction() on a fresh triangulation)\n");
   return all_ok ? 0 : 1;
 #endif
 }

@@ -28,7 +28,7 @@
 #include "benchmark_util.h"
 
 #include <CGAL/Delaunay_from_prediction/imprecise_points.h>
-#include <CGAL/Delaunay_from_prediction/internal/insertion.h>
+#include <CGAL/Delaunay_from_prediction/internal/build/insertion.h>
 #include <CGAL/Triangulation_hierarchy_2.h>
 #include <CGAL/Triangulation_hierarchy_vertex_base_2.h>
 #include <CGAL/spatial_sort.h>

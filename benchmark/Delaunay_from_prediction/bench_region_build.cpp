@@ -2,20 +2,20 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Author(s): Delaunay_from_prediction founding team
 //
-// The region-parallel build (internal/region_parallel_build.h) against the package's sequential
+// The region-parallel build (internal/build/block_parallel_build.h) against the package's sequential
 // build from scratch and CGAL's range insert, in the same run, for 2, 4 and 8 blocks in a TBB
 // arena of --threads threads; also the seams' share (points triangulated again) and the walls
-// that failed the in-circle test, and the time of each stage of the region build (what limits
-// its scaling: the stages other than the blocks' triangulations run on one thread, or partly).
-// These times decide from how many threads the entry points build by regions
-// (Region_build_thresholds). Times are medians of --reps repetitions, the
+// that failed the in-circle test. These times decide from how many threads the entry points
+// build by regions (DFP::Tuning::min_threads_for_blocks, min_points_per_block). (The time of
+// each of the region build's own steps, split, blocks, seams and join, is no longer reported:
+// they are steps inside Stage::rebuild, not stages a visitor sees.) Times are medians of --reps repetitions, the
 // calls alternating; every result is checked against CGAL's (face set signature).
 //
 // Usage: bench_region_build [--n 1e6] [--reps 5] [--threads 2] [--seed S]
 
 #include "benchmark_util.h"
 
-#include <CGAL/Delaunay_from_prediction/internal/region_parallel_build.h>
+#include <CGAL/Delaunay_from_prediction/internal/build/block_parallel_build.h>
 
 #ifdef CGAL_LINKED_WITH_TBB
 #include <tbb/task_arena.h>
@@ -58,8 +58,8 @@ int main(int argc, char** argv)
   for(const std::string dist : {"uniform", "clustered"}) {
     const std::vector<Point> points = distribution_points(dist, n, salted_seed(0x4e61, seed, dist, n));
     const std::size_t block_counts[] = {2, 4, 8};
-    std::vector<double> cgal, sequential, regions[3], stage[3][4];
-    internal::Region_build_report report[3];
+    std::vector<double> cgal, sequential, regions[3];
+    internal::Block_build_counts report[3];
     bool same = true;
     for(int r = 0; r < reps; ++r) {
       Signature expected, got;
@@ -76,14 +76,10 @@ int main(int argc, char** argv)
         regions[b].push_back(time_call(dt, [&] {
           arena.execute([&] {
             DFP::Statistics st;
-            built = internal::build_by_regions(dt, points.begin(), n, st, block_counts[b], true, &report[b]);
+            built = internal::build_in_blocks(dt, points.begin(), n, st, block_counts[b], true, &report[b]);
           });
         }, got));
         same = same && built && got == expected;
-        const double seconds[4] = {report[b].split_seconds, report[b].blocks_seconds, report[b].seams_seconds,
-                                   report[b].join_seconds};
-        for(int k = 0; k < 4; ++k)
-          stage[b][k].push_back(seconds[k]);
       }
     }
     all_same = all_same && same;
@@ -99,15 +95,9 @@ int main(int argc, char** argv)
                   median(cgal_reg), median(seq_reg), 100.0 * double(report[b].seam_points) / double(n),
                   report[b].walls_failing, same ? "ok" : "DIFFERENT");
     }
-    for(int b = 0; b < 3; ++b)
-      std::printf("%-9s %-6zu | stages: split %.4f s, blocks %.4f s (parallel), seams %.4f s, join %.4f s\n",
-                  dist.c_str(), block_counts[b], median(stage[b][0]), median(stage[b][1]), median(stage[b][2]),
-                  median(stage[b][3]));
   }
   std::printf("(seams: the points triangulated again for the seams; failing: walls repaired by flips;\n"
-              " times are medians, ratios medians of the ratios of each repetition; stages: medians of\n"
-              " the region build's own clock: the split into blocks, the blocks' triangulations on the\n"
-              " threads, DT(seam vertices) with the walls on one thread, the join)\n");
+              " times are medians, ratios medians of the ratios of each repetition)\n");
   return all_same ? 0 : 1;
 #endif
 }

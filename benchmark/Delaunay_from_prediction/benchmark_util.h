@@ -14,7 +14,7 @@
 #define DFP_BENCHMARK_UTIL_H
 
 #include <CGAL/Delaunay_from_prediction_2.h>
-#include <CGAL/Delaunay_from_prediction/internal/random.h>
+#include <CGAL/Delaunay_from_prediction/internal/toolbox/random.h>
 
 #include <CGAL/Delaunay_triangulation_2.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -34,6 +34,7 @@
 #include <cstring>
 #include <ctime>
 #include <fstream>
+#include <functional>
 #include <iterator>
 #include <limits>
 #include <sstream>
@@ -353,6 +354,33 @@ double time_cgal(const std::vector<Input>& input, Signature& sig)
   Tr tr;
   return time_call(tr, [&] { tr.insert(input.begin(), input.end()); }, sig);
 }
+
+// A visitor (named parameter `visitor`, passed as std::ref(timer)) that times the stages of
+// delaunay_from_prediction() and make_delaunay(): wall-clock seconds per stage, summed over the
+// calls it is given to, and the stages seen, in order.
+struct Stage_timer
+{
+  std::vector<std::pair<DFP::Stage, double>> times; // each stage as it ended, with its seconds
+  CGAL::Real_timer clock;
+  double began = 0;
+
+  Stage_timer() { clock.start(); }
+  void stage_begin(DFP::Stage) { began = clock.time(); }
+  void stage_end(DFP::Stage stage) { times.emplace_back(stage, clock.time() - began); }
+  // The seconds spent in `stage` (0 if it did not run).
+  double seconds(DFP::Stage stage) const
+  {
+    double sum = 0;
+    for(const auto& t : times)
+      sum += t.first == stage ? t.second : 0;
+    return sum;
+  }
+  bool saw(DFP::Stage stage) const
+  {
+    return std::any_of(times.begin(), times.end(), [&](const auto& t) { return t.first == stage; });
+  }
+  void clear() { times.clear(); }
+};
 
 // Our delaunay_from_prediction().
 template <class NamedParameters = DFP::parameters::Default_named_parameters>

@@ -419,7 +419,7 @@ void experiment_b(const Options& o)
           "(b) k=" + std::to_string(k) + ": D_local <= D <= Lawson flips violated");
     const double c = t[0].median(), d = t[1].median(), u = t[2].median();
     std::printf("%9zu %9zu %9zu %9zu %9s  %9.4f %9.4f %9.4f  %s\n", k, D, unl.edges_not_locally_delaunay,
-                unl.flips, "", c, d, u, def.fell_back ? (std::string("FALLBACK: ") + def.fallback_reason).c_str() : "predict");
+                unl.flips, "", c, d, u, def.fell_back ? (std::string("FALLBACK: ") + to_string(def.outcome)).c_str() : "predict");
     std::fflush(stdout);
     if(def.fell_back && !reported_fallback) {
       reported_fallback = true;
@@ -429,7 +429,7 @@ void experiment_b(const Options& o)
     csv << n << ',' << k << ',' << D << ',' << double(D) / double(n) << ',' << unl.edges_not_locally_delaunay
         << ',' << unl.flips << ',' << budget << ',' << reps << ',' << c << ',' << t[0].min() << ',' << d << ','
         << t[1].min() << ',' << u << ',' << t[2].min() << ',' << int(def.fell_back) << ','
-        << csv_quote(def.fallback_reason) << ',' << def.flips << ',' << c / d << ',' << c / u << '\n';
+        << csv_quote(to_string(def.outcome)) << ',' << def.flips << ',' << c / d << ',' << c / u << '\n';
   }
 }
 
@@ -479,10 +479,10 @@ void experiment_c(const Options& o)
           measure_budgets(reps, points, faces, def, unl, std::string("(c) ") + model + " rho=" + std::to_string(rho));
       Row r{model, rho, D, unl.edges_not_locally_delaunay, unl.flips, def.flips, reps, gen.time(),
             t[0].median(), t[0].min(), t[1].median(), t[1].min(), t[2].median(), t[2].min(),
-            def.fell_back, def.fallback_reason};
+            def.fell_back, to_string(def.outcome)};
       std::printf("%-14s %5.2f %8.3f %9zu %9zu  %8.3f %8.4f %8.4f %8.4f  %s\n", model, rho,
                   double(D) / double(n), r.lawson, r.D_local, r.gen, r.cgal, r.def, r.unl,
-                  def.fell_back ? (std::string("FALLBACK: ") + def.fallback_reason).c_str() : "predict");
+                  def.fell_back ? (std::string("FALLBACK: ") + to_string(def.outcome)).c_str() : "predict");
       std::fflush(stdout);
       rows.push_back(r);
     }

@@ -32,7 +32,7 @@
 // draw; 0.15 inverts about 45. The program says so (exit status 2) when the certificate stops.
 
 #include <CGAL/Delaunay_from_prediction_2.h>
-#include <CGAL/Delaunay_from_prediction/internal/random.h>
+#include <CGAL/Delaunay_from_prediction/internal/toolbox/random.h>
 
 #include <CGAL/Delaunay_triangulation_2.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -219,15 +219,15 @@ int main(int argc, char** argv)
   std::vector<Face_handle> touched;
   DFP::internal::Inline_flips<DT> inline_flips{DFP::internal::default_max_flips(tr.number_of_vertices()), flips,
                                                touched, untangled};
-  const DFP::internal::Outcome why = DFP::internal::certify_triangulation(
+  const DFP::Outcome why = DFP::internal::certify_triangulation(
       tr, stack, edges_tested, hull_is_convex, &bad, limits.max_bad_faces, &inline_flips);
-  if(why != DFP::internal::Outcome::ok) {
+  if(why != DFP::Outcome::ok) {
     std::size_t not_ccw = 0;
     for(auto f = tr.finite_faces_begin(); f != tr.finite_faces_end(); ++f)
       not_ccw += CGAL::orientation(f->vertex(0)->point(), f->vertex(1)->point(), f->vertex(2)->point()) ==
                          CGAL::LEFT_TURN ? 0 : 1;
     std::fprintf(stderr, "the certificate stopped: %s (%zu of %zu faces not ccw, at most %zu allowed); "
-                 "choose a smaller --sigma or another --seed\n", DFP::internal::fallback_reason(why), not_ccw, tr.number_of_faces(),
+                 "choose a smaller --sigma or another --seed\n", DFP::to_string(why), not_ccw, tr.number_of_faces(),
                  limits.max_bad_faces);
     return 2;
   }
@@ -258,9 +258,9 @@ int main(int argc, char** argv)
     }
     carve.carve_star(f->vertex(crossing));
   }
-  const DFP::internal::Outcome plan_failed = bad.empty() ? DFP::internal::Outcome::ok : carve.plan(limits);
-  if(plan_failed != DFP::internal::Outcome::ok)
-    std::fprintf(stderr, "warning: the local repair gives up: %s\n", DFP::internal::fallback_reason(plan_failed));
+  const DFP::Outcome plan_failed = bad.empty() ? DFP::Outcome::ok : carve.plan(limits);
+  if(plan_failed != DFP::Outcome::ok)
+    std::fprintf(stderr, "warning: the local repair gives up: %s\n", DFP::to_string(plan_failed));
   if(bad.empty())
     std::fprintf(stderr, "warning: the untangling flips repaired every face: nothing is carved\n");
 
@@ -270,7 +270,7 @@ int main(int argc, char** argv)
   std::set<std::size_t> detached;
   for(const Vertex_handle v : carve.detached())
     detached.insert(v->info());
-  const bool carved_any = !bad.empty() && plan_failed == DFP::internal::Outcome::ok;
+  const bool carved_any = !bad.empty() && plan_failed == DFP::Outcome::ok;
   auto is_carved = [&](Face_handle f) { return carved_any && carve.is_removed(f); };
 
   // 3. The figure.
@@ -411,7 +411,7 @@ int main(int argc, char** argv)
   std::printf("faces_carved=%zu holes_refilled=%zu points_reinserted=%zu flips=%zu fell_back=%s%s%s\n",
               stats.faces_carved, stats.holes_refilled, stats.points_reinserted, stats.flips,
               stats.fell_back ? "true" : "false", stats.fell_back ? " fallback_reason=" : "",
-              stats.fell_back ? stats.fallback_reason : "");
+              stats.fell_back ? to_string(stats.outcome) : "");
   if(carved_any && !stats.fell_back &&
      (stats.faces_carved != carve.faces_removed() || stats.holes_refilled != carve.holes() ||
       stats.points_reinserted != carve.detached().size()))

@@ -106,7 +106,7 @@ void print(const DFP::Statistics& s)
             << "  duplicate_points           " << s.duplicate_points << "\n"
             << "  fell_back                  " << (s.fell_back ? "yes" : "no");
   if(s.fell_back)
-    std::cout << " (" << s.fallback_reason << ")";
+    std::cout << " (" << to_string(s.outcome) << ")";
   std::cout << "\n";
 }
 

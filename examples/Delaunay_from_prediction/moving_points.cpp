@@ -172,7 +172,7 @@ int main(int argc, char* argv[])
                 stats.edges_not_locally_delaunay, stats.flips, stats.fell_back ? "yes" : "no",
                 ok ? "OK" : "FAIL", ours.time(), cgal.time(), cgal.time() / ours.time());
     if(stats.fell_back)
-      std::printf("      fell back: %s\n", stats.fallback_reason);
+      std::printf("      fell back: %s\n", to_string(stats.outcome));
   }
 
   std::printf("\nSummary: %d/%d frames checked OK; %d/%d frames repaired in place (fast path),"

@@ -11,7 +11,7 @@
 #define CGAL_DELAUNAY_FROM_PREDICTED_EDGES_2_H
 
 #include <CGAL/Delaunay_from_prediction_2.h>
-#include <CGAL/Delaunay_from_prediction/internal/graph_triangles.h>
+#include <CGAL/Delaunay_from_prediction/internal/measures/graph_triangles.h>
 
 #include <algorithm>
 #include <array>

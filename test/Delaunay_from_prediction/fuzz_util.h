@@ -86,7 +86,7 @@ struct Case
   bool screen = true;         // screen_prediction
   bool t2 = false;            // make_delaunay on a plain Triangulation_2
   bool parallel = false;      // called with CGAL::Parallel_if_available_tag (the prediction entry points, make_delaunay)
-  long long region_block_points = -1; // with `parallel`: Region_build_thresholds::min_points_per_block (-1: default)
+  long long region_block_points = -1; // with `parallel`: Block_build_thresholds::min_points_per_block (-1: default)
   unsigned param_seed = 0;    // random_seed for brio / split (0: not given)
   double sample_probability = -1;
   XYs pts;                    // points; make_delaunay: initial points; imprecise: centres

@@ -9,10 +9,15 @@
 // with another triangulation) and containers exactly as they were. Malformed faces are found
 // wherever they are: after a face that already makes the prediction unusable, last in the list,
 // and when the sampling screen rejects the prediction first (n >= 4096).
+// make_delaunay() and split_delaunay() on a triangulation one of whose vertices was moved to a
+// NaN or infinite point: Invalid_prediction naming the vertex, the triangulation unchanged
+// (Epick, Simple_cartesian<double>, and Epeck, whose exact value of a NaN would raise SIGFPE).
 
 #include <CGAL/Delaunay_from_prediction_2.h> // first: the header is self-contained
 
 #include "test_util.h"
+
+#include <CGAL/Delaunay_from_prediction/split.h>
 
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -243,6 +248,70 @@ void test_non_finite(CGAL::Random& rng)
   }
 }
 
+// A vertex of `tr` moved to (x, y) with a non-finite coordinate: make_delaunay() and
+// split_delaunay() throw naming its rank in finite-vertex order, before anything changes.
+// Compared with a snapshot taken with the vertex at its old point, then put back (a NaN point
+// equals no point, not even itself).
+template <class Tr>
+void expect_non_finite_vertex(Tr& tr, std::size_t rank, double x, double y, bool parallel)
+{
+  using Point = typename Tr::Point;
+  auto v = tr.finite_vertices_begin();
+  std::advance(v, std::ptrdiff_t(rank));
+  const Point old = v->point();
+  const Snapshot<Tr> before(tr);
+  v->set_point(make_point<typename Tr::Geom_traits>(x, y));
+  auto expect_throw = [&](const char* call, auto&& f) {
+    bool thrown = false;
+    try {
+      f();
+    } catch(const DFP::Invalid_prediction& e) {
+      thrown = true;
+      DFP_CHECK_MSG(mentions_number(std::string(e.what()), rank) && std::strstr(e.what(), "non-finite") != nullptr,
+                    call << ": " << e.what());
+    }
+    DFP_CHECK_MSG(thrown, call << " did not throw for vertex " << rank);
+  };
+  expect_throw("make_delaunay", [&] {
+    if(parallel)
+      DFP::make_delaunay<CGAL::Parallel_if_available_tag>(tr);
+    else
+      DFP::make_delaunay(tr);
+  });
+  if constexpr(std::is_same<Tr, CGAL::Delaunay_triangulation_2<typename Tr::Geom_traits>>::value) {
+    Tr first, second;
+    first.insert(Point(5, 5)); // must stay as it is
+    expect_throw("split_delaunay", [&] { DFP::split_delaunay(tr, [](auto) { return true; }, first, second); });
+    DFP_CHECK(first.number_of_vertices() == 1 && second.number_of_vertices() == 0);
+  }
+  DFP_CHECK(!DFP::internal::is_finite_point(v->point())); // still where the caller put it
+  v->set_point(old);
+  check_unchanged(tr, before);
+}
+
+template <class Tr>
+void test_non_finite_vertices(const char* name, CGAL::Random& rng)
+{
+  Scope scope(name, ": a vertex moved to a non-finite point");
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const double inf = std::numeric_limits<double>::infinity();
+  using K = typename Tr::Geom_traits;
+  const auto points = to_points<K>(uniform_points(400, rng));
+  for(const bool parallel : {false, true}) {
+    Tr tr;
+    tr.insert(points.begin(), points.end());
+    expect_non_finite_vertex(tr, 0, nan, 0.5, parallel);
+    expect_non_finite_vertex(tr, 123, 0.5, nan, parallel);
+    expect_non_finite_vertex(tr, 399, inf, 0.25, parallel);
+    expect_non_finite_vertex(tr, 200, 0.25, -inf, parallel);
+    // Moved points elsewhere too (the repair would have work to do): still checked first.
+    for(auto v = tr.finite_vertices_begin(); v != tr.finite_vertices_end(); ++v)
+      v->set_point(make_point<K>(CGAL::to_double(v->point().x()) + rng.get_double(-0.05, 0.05),
+                                 CGAL::to_double(v->point().y())));
+    expect_non_finite_vertex(tr, 7, nan, nan, parallel);
+  }
+}
+
 // n >= 4096: the sampling screen may reject the prediction before the full check; the
 // malformed face must still be reported.
 template <class K, class DT>
@@ -287,12 +356,43 @@ void test_kernel(const char* name, bool finite_checks)
 
 int main()
 {
-  // Non-finite coordinates only exist in kernels with double coordinates: Epeck and Gmpq
-  // cannot even represent them (converting NaN to an exact number is undefined).
+  // Non-finite coordinates in the point ranges: kernels with double coordinates (Epeck
+  // below, in a build without CGAL's assertions; Gmpq cannot represent them).
   test_kernel<CGAL::Exact_predicates_inexact_constructions_kernel>("Epick", true);
   test_kernel<CGAL::Simple_cartesian<double>>("Simple_cartesian<double>", true);
   test_kernel<CGAL::Exact_predicates_exact_constructions_kernel>("Epeck", false);
   test_kernel<CGAL::Simple_cartesian<CGAL::Gmpq>>("Simple_cartesian<Gmpq>", false);
+  {
+    CGAL::Random rng(17);
+    using Epick = CGAL::Exact_predicates_inexact_constructions_kernel;
+    DFP_RUN(test_non_finite_vertices<DT_with_info<Epick>>("Epick, Delaunay_triangulation_2 with info", rng));
+    DFP_RUN(test_non_finite_vertices<CGAL::Delaunay_triangulation_2<Epick>>("Epick, Delaunay_triangulation_2", rng));
+    DFP_RUN(test_non_finite_vertices<T2_plain<Epick>>("Epick, Triangulation_2", rng));
+    DFP_RUN(test_non_finite_vertices<CGAL::Delaunay_triangulation_2<CGAL::Simple_cartesian<double>>>(
+        "Simple_cartesian<double>", rng));
+#if defined(NDEBUG) || defined(CGAL_NDEBUG)
+    // Epeck holds a NaN or an infinity made from a double as its interval (with CGAL's
+    // assertions on, the interval itself refuses it): the package must never ask for its
+    // exact value, which would raise SIGFPE in GMP.
+    using Epeck = CGAL::Exact_predicates_exact_constructions_kernel;
+    DFP_RUN(test_non_finite_vertices<CGAL::Delaunay_triangulation_2<Epeck>>("Epeck", rng));
+    {
+      Scope s("Epeck, delaunay_from_prediction, NaN in point 9"); // the points compared by hand:
+      std::vector<Epeck::Point_2> p = to_points<Epeck>(uniform_points(40, rng)); // an exact
+      const Faces good = delaunay_faces<Epeck>(p);                  // comparison would raise SIGFPE
+      p[9] = make_point<Epeck>(std::numeric_limits<double>::quiet_NaN(), 0.5);
+      DT_with_info<Epeck> dt;
+      dt.insert(Epeck::Point_2(1, 2));
+      bool thrown = false;
+      try {
+        DFP::delaunay_from_prediction(p, good, dt);
+      } catch(const DFP::Invalid_prediction& e) {
+        thrown = mentions_number(std::string(e.what()), 9);
+      }
+      DFP_CHECK(thrown && dt.number_of_vertices() == 1);
+    }
+#endif
+  }
   {
     Scope scope("Epick, n = 5000");
     CGAL::Random rng(5);

@@ -70,7 +70,7 @@ struct Degenerate_test
       auto flipped = indexed_delaunay<K>(points);
       const std::size_t done = flip_randomly(flipped, std::max<std::size_t>(1, dt_faces.size() / 16), rng);
       const DFP::Statistics st = run<DT>(points, faces_by_info(flipped));
-      DFP_CHECK_MSG(!st.fell_back, st.fallback_reason);
+      DFP_CHECK_MSG(!st.fell_back, to_string(st.outcome));
       if(done > 0)
         DFP_CHECK(st.flips > 0);
     }
@@ -145,7 +145,7 @@ struct Degenerate_test
       });
       check_is_cgal_delaunay(tr, points);
       if(tr.dimension() == 2)
-        DFP_CHECK_MSG(!st.fell_back, st.fallback_reason);
+        DFP_CHECK_MSG(!st.fell_back, to_string(st.outcome));
     }
     {
       Scope s("make_delaunay on the DT after random flips");
@@ -154,7 +154,7 @@ struct Degenerate_test
       const DFP::Statistics st = with_concurrency([&](auto tag) { return DFP::make_delaunay<decltype(tag)>(tr); });
       check_is_cgal_delaunay(tr, points);
       if(tr.dimension() == 2)
-        DFP_CHECK_MSG(!st.fell_back, st.fallback_reason);
+        DFP_CHECK_MSG(!st.fell_back, to_string(st.outcome));
     }
   }
 

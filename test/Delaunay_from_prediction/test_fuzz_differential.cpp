@@ -592,7 +592,7 @@ static Case gen_case(unsigned long long seed, long long k)
     break;
   }
   }
-  // Builds from scratch by regions (region_parallel_build.h) at the fuzzer's sizes: blocks of
+  // Builds from scratch by regions (block_parallel_build.h) at the fuzzer's sizes: blocks of
   // a few points, so that most points are near a seam.
   if(c.parallel && rng.get_int(0, 2) == 0)
     c.region_block_points = rng.get_int(3, 64);
@@ -600,17 +600,14 @@ static Case gen_case(unsigned long long seed, long long k)
 }
 #endif // DFP_FUZZ_EPECK_PART
 
-// Region_build_thresholds::min_points_per_block as the case says, for one call.
-struct Region_blocks_of
+// The tuning of a case's calls: Tuning::min_points_per_block as the case says.
+inline DFP::Tuning tuning_of(const Case& c)
 {
-  DFP::internal::Region_build_thresholds saved = DFP::internal::region_build_thresholds();
-  explicit Region_blocks_of(const Case& c)
-  {
-    if(c.region_block_points >= 0)
-      DFP::internal::region_build_thresholds().min_points_per_block = std::size_t(c.region_block_points);
-  }
-  ~Region_blocks_of() { DFP::internal::region_build_thresholds() = saved; }
-};
+  DFP::Tuning t;
+  if(c.region_block_points >= 0)
+    t.min_points_per_block = std::size_t(c.region_block_points);
+  return t;
+}
 
 // ---------------------------------------------------------------------------------------------
 // Checks
@@ -731,7 +728,7 @@ inline void check_stats(Checker& ck, const DFP::Statistics& s, long long faces_i
     d << "duplicate_points " << s.duplicate_points << ", expected " << n - vertices << " (" << n << " points, "
       << vertices << " vertices)",
         ck.fail("stats:duplicate_points", d.str());
-  else if(s.fell_back && std::string(s.fallback_reason ? s.fallback_reason : "").empty())
+  else if(s.fell_back && s.outcome == DFP::Outcome::ok)
     ck.fail("stats:fell_back_without_reason", "");
 }
 
@@ -773,9 +770,11 @@ void run_dfp(Checker& ck, const Case& c, bool exact)
       std::vector<std::pair<long long, long long>> e;
       for(const Tri& t : c.faces)
         e.emplace_back(t[0], t[1]);
-      s = DFP::delaunay_from_predicted_edges<Tag>(P, e, tr);
-    } else if(!any)
+      s = DFP::delaunay_from_predicted_edges<Tag>(P, e, tr, DFP::parameters::tuning(tuning_of(c)));
+    } else if(!any && c.region_block_points < 0)
       s = DFP::delaunay_from_prediction<Tag>(P, c.faces, tr);
+    else if(!any)
+      s = DFP::delaunay_from_prediction<Tag>(P, c.faces, tr, DFP::parameters::tuning(tuning_of(c)));
     else
       s = DFP::delaunay_from_prediction<Tag>(
           P, c.faces, tr,
@@ -785,10 +784,9 @@ void run_dfp(Checker& ck, const Case& c, bool exact)
                   c.max_flips >= 0 ? std::size_t(c.max_flips) : 3 * n / 4 + 64,
                   DFP::parameters::region_size(
                       c.region_size >= 0 ? std::size_t(c.region_size) : DFP::internal::default_region_size(n),
-                      DFP::parameters::screen_prediction(c.screen)))));
+                      DFP::parameters::screen_prediction(c.screen)))).tuning(tuning_of(c)));
   };
   expect_no_throw(ck, [&] {
-    const Region_blocks_of blocks(c);
     if(c.parallel)
       call_with(CGAL::Parallel_if_available_tag());
     else
@@ -813,7 +811,7 @@ void run_dfp(Checker& ck, const Case& c, bool exact)
     ck.fail("certify:exact_prediction_not_certified",
             std::to_string(s.faces_certified) + " of " + std::to_string(s.faces_in) + " certified, " +
                 std::to_string(s.flips) + " flips, fell_back " + std::to_string(s.fell_back) + " (" +
-                (s.fallback_reason ? s.fallback_reason : "") + ")");
+                to_string(s.outcome) + ")");
   if(exact && ck.failure.empty() && c.entry == E_DFP && c.output == O_INFO) {
     dfp_test::Faces f;
     for(const Tri& t : c.faces)
@@ -838,16 +836,18 @@ void run_md(Checker& ck, const Case& c, bool exact)
   DFP::Statistics s;
   auto call_with = [&](auto tag) {
     using Tag = decltype(tag);
-    if(c.strategy < 0 && c.max_flips < 0)
+    if(c.strategy < 0 && c.max_flips < 0 && c.region_block_points < 0)
       s = DFP::make_delaunay<Tag>(tr);
+    else if(c.strategy < 0 && c.max_flips < 0)
+      s = DFP::make_delaunay<Tag>(tr, DFP::parameters::tuning(tuning_of(c)));
     else
       s = DFP::make_delaunay<Tag>(tr, DFP::parameters::strategy(
                                           c.strategy >= 0 ? DFP::Strategy(c.strategy) : DFP::Strategy::automatic,
                                           DFP::parameters::max_flips(c.max_flips >= 0 ? std::size_t(c.max_flips)
-                                                                                      : 3 * P0.size() / 4 + 64)));
+                                                                                      : 3 * P0.size() / 4 + 64))
+                                          .tuning(tuning_of(c)));
   };
   auto call = [&] {
-    const Region_blocks_of blocks(c);
     if(c.parallel)
       call_with(CGAL::Parallel_if_available_tag());
     else

@@ -16,7 +16,7 @@
 
 #include <CGAL/Delaunay_from_predicted_edges_2.h>
 #include <CGAL/Delaunay_from_prediction/brio_dc.h>
-#include <CGAL/Delaunay_from_prediction/internal/hierarchy.h>
+#include <CGAL/Delaunay_from_prediction/internal/build/hierarchy.h>
 #include <CGAL/Delaunay_from_prediction/imprecise_points.h>
 #include <CGAL/Delaunay_from_prediction/spanning_graph.h>
 #include <CGAL/Delaunay_from_prediction/split.h>

@@ -17,8 +17,8 @@
 
 #include <CGAL/Delaunay_from_prediction/brio_dc.h>
 #include <CGAL/Delaunay_from_prediction/imprecise_points.h>
-#include <CGAL/Delaunay_from_prediction/internal/predicates.h>
-#include <CGAL/Delaunay_from_prediction/internal/random.h>
+#include <CGAL/Delaunay_from_prediction/internal/toolbox/predicates.h>
+#include <CGAL/Delaunay_from_prediction/internal/toolbox/random.h>
 #include <CGAL/Delaunay_from_prediction/spanning_graph.h>
 #include <CGAL/Delaunay_from_prediction/split.h>
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
@@ -269,7 +269,7 @@ int main(int argc, char** argv)
 {
   const std::size_t count = argc > 1 ? std::size_t(std::stoul(argv[1])) : 300;
 
-  // The trait that routes the kernels (internal/predicates.h).
+  // The trait that routes the kernels (internal/toolbox/predicates.h).
   DFP_CHECK(DFP::internal::decides_by_exact_predicates<SC>::value);
   DFP_CHECK(DFP::internal::has_exact_predicates<CGAL::Epick>::value);
   DFP_CHECK(DFP::internal::has_exact_predicates<CGAL::Epeck>::value);

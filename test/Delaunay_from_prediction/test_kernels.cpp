@@ -80,7 +80,7 @@ struct Kernel_test
       const DFP::Statistics st = run<DT>(points, faces);
       DFP_CHECK(done > 0 && wrong > 0);
       if(exact_predicates) {
-        DFP_CHECK_MSG(!st.fell_back, st.fallback_reason);
+        DFP_CHECK_MSG(!st.fell_back, to_string(st.outcome));
         DFP_CHECK_MSG(st.flips >= wrong, st.flips << " vs " << wrong);
         DFP_CHECK(st.edges_not_locally_delaunay >= 1 && st.edges_not_locally_delaunay <= wrong);
       }
@@ -90,7 +90,7 @@ struct Kernel_test
       const DFP::Statistics st = run<DT>(points, faces_by_info(indexed_triangulation<K>(points)),
                                          true, DFP::parameters::max_flips(100 * n));
       if(exact_predicates) {
-        DFP_CHECK_MSG(!st.fell_back, st.fallback_reason);
+        DFP_CHECK_MSG(!st.fell_back, to_string(st.outcome));
         DFP_CHECK(st.flips > 0);
       }
     }

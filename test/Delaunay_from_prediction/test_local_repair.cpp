@@ -12,7 +12,7 @@
 // Every call is made with each strategy (no parameter, automatic, carve, t_division, flips,
 // rebuild) and its result must be exactly CGAL's Delaunay_triangulation_2 built from scratch,
 // whatever path was taken. The budget of t_division is lifted in this file, so that its
-// repair (region_repair.h) runs on small, badly damaged inputs too instead of falling back
+// repair (t_division_repair.h) runs on small, badly damaged inputs too instead of falling back
 // (test_t_division.cpp tests it with its budget). On top of that:
 //  - a prediction that is a triangulation is handled as before: nothing carved or refilled;
 //  - with small damage at moderate n, the carving strategies (default, automatic, carve) do
@@ -52,6 +52,15 @@ using Random = DFP::internal::Splitmix64;
 
 namespace {
 
+// No budget for Strategy::t_division (Tuning::t_division_budget_factor infinite): its repair
+// is reached whatever the damage.
+DFP::Tuning unlimited_t_division()
+{
+  DFP::Tuning t;
+  t.t_division_budget_factor = std::numeric_limits<double>::infinity();
+  return t;
+}
+
 // ---------------------------------------------------------------------------------------------
 // Strategies
 // ---------------------------------------------------------------------------------------------
@@ -68,7 +77,7 @@ std::string describe(const DFP::Statistics& s)
       << " duplicates=" << s.duplicate_points << " reordered=" << s.input_reordered
       << " carved=" << s.faces_carved << " holes=" << s.holes_refilled << " rounds=" << s.carve_rounds
       << " regions=" << s.regions << " bad_regions=" << s.bad_regions << " V_B=" << s.boundary_vertices
-      << " reason='" << s.fallback_reason << "'";
+      << " reason='" << to_string(s.outcome) << "'";
   return out.str();
 }
 
@@ -89,7 +98,7 @@ struct Expect
 void check_strategy(Mode m, const DFP::Statistics& s, const Expect& e, std::size_t n,
                     std::size_t reinsert_bound)
 {
-  DFP_CHECK_MSG(std::string(s.fallback_reason).empty() == !s.fell_back, describe(s));
+  DFP_CHECK_MSG((s.outcome == DFP::Outcome::ok) == !s.fell_back, describe(s));
   DFP_CHECK_MSG(s.faces_certified <= s.faces_in, describe(s));
   DFP_CHECK_MSG(s.faces_carved <= s.faces_in, describe(s));
   if(s.fell_back) {
@@ -124,10 +133,10 @@ void check_strategy(Mode m, const DFP::Statistics& s, const Expect& e, std::size
       if(e.carve_expected) // an inverted face makes its region bad; a dropped face is carved
         DFP_CHECK_MSG(s.faces_carved > 0, describe(s));
     } else {
-      // With exact predicates the fill always fits (region_repair.h): a fallback is for a
+      // With exact predicates the fill always fits (t_division_repair.h): a fallback is for a
       // budget or a degenerate input, never for an inconsistency.
-      DFP_CHECK_MSG(!reason_is(s, DFP::internal::Outcome::kept_faces_do_not_fit) &&
-                        !reason_is(s, DFP::internal::Outcome::kept_faces_repeated),
+      DFP_CHECK_MSG(!reason_is(s, DFP::Outcome::kept_faces_do_not_fit) &&
+                        !reason_is(s, DFP::Outcome::kept_faces_repeated),
                     describe(s));
     }
   } else if(m == Mode::regions) {
@@ -140,10 +149,10 @@ void check_strategy(Mode m, const DFP::Statistics& s, const Expect& e, std::size
     if(!s.fell_back)
       DFP_CHECK_MSG(s.regions >= 2, describe(s));
     else
-      DFP_CHECK_MSG(reason_is(s, DFP::internal::Outcome::too_few_regions) ||
-                        reason_is(s, DFP::internal::Outcome::regions_interleave) ||
-                        reason_is(s, DFP::internal::Outcome::regions_do_not_fit) ||
-                        reason_is(s, DFP::internal::Outcome::no_faces),
+      DFP_CHECK_MSG(reason_is(s, DFP::Outcome::too_few_regions) ||
+                        reason_is(s, DFP::Outcome::regions_interleave) ||
+                        reason_is(s, DFP::Outcome::regions_do_not_fit) ||
+                        reason_is(s, DFP::Outcome::no_faces),
                     describe(s));
   } else if(m == Mode::flips) {
     if(e.not_triangulation)
@@ -154,7 +163,7 @@ void check_strategy(Mode m, const DFP::Statistics& s, const Expect& e, std::size
   } else { // rebuild, spanning_tree (make_delaunay: rebuild)
     DFP_CHECK_MSG(s.fell_back, describe(s));
     DFP_CHECK_MSG(s.points_reinserted == n, describe(s) << ", n = " << n);
-    DFP_CHECK_MSG(std::string(s.fallback_reason) != "", describe(s));
+    DFP_CHECK_MSG(s.outcome != DFP::Outcome::ok, describe(s));
     DFP_CHECK_MSG(s.faces_certified == 0 && s.faces_carved == 0, describe(s));
   }
 }
@@ -384,7 +393,7 @@ void dfp_case(const std::string& label, const std::vector<typename DT::Point>& p
     dt.insert(make_point<K>(0., -1e3));
     const DFP::Statistics s = with_mode(m, [&](const auto& np) {
       return DFP::delaunay_from_prediction(points, faces, dt, np);
-    });
+    }, unlimited_t_division());
     if(verbose())
       std::cout << where() << ": " << describe(s) << std::endl;
     check_is_cgal_delaunay(dt, points);
@@ -601,7 +610,8 @@ void md_case(const std::string& label, const std::vector<typename Tr::Point>& st
     const std::size_t faces_before = tr.dimension() == 2 ? tr.number_of_faces() : 0;
     if(m == Mode::defaults && expect_inverted)
       DFP_CHECK_MSG(inverted > 0, "the moves inverted no face");
-    const DFP::Statistics s = with_mode(m, [&](const auto& np) { return DFP::make_delaunay(tr, np); });
+    const DFP::Statistics s =
+        with_mode(m, [&](const auto& np) { return DFP::make_delaunay(tr, np); }, unlimited_t_division());
     if(verbose())
       std::cout << where() << ": " << inverted << " inverted: " << describe(s) << std::endl;
     if(!exact) {
@@ -837,7 +847,7 @@ void euler_early_exit()
     const Faces kept = DFP::delete_faces(DFP::delaunay_triangles(points), 0.15, 6002);
     DT dt;
     const DFP::Statistics s = DFP::delaunay_from_prediction(points, kept, dt);
-    DFP_CHECK_MSG(s.fell_back && reason_is(s, DFP::internal::Outcome::too_many_holes), describe(s));
+    DFP_CHECK_MSG(s.fell_back && reason_is(s, DFP::Outcome::too_many_holes), describe(s));
     DFP_CHECK_MSG(!s.input_reordered, describe(s)); // stopped before the spatial ordering
     check_is_cgal_delaunay(dt, points);
   }
@@ -926,9 +936,9 @@ void import_fills_small_holes()
     std::vector<std::uint32_t> triples;
     DFP_CHECK(DFP::internal::read_index_triples(kept, points.size(), kept.size(), triples));
     DFP::internal::Prediction_importer<DT>::run(imported, points.begin(), points.size(), triples, out, true);
-    DFP_CHECK_MSG(out.failure == DFP::internal::Outcome::ok && !out.needs_repair && out.holes_filled == deleted &&
+    DFP_CHECK_MSG(out.failure == DFP::Outcome::ok && !out.needs_repair && out.holes_filled == deleted &&
                       out.filled_faces.size() == deleted && out.not_locally_delaunay.empty(),
-                  DFP::internal::fallback_reason(out.failure) << " needs_repair " << out.needs_repair << ", " << out.holes_filled
+                  DFP::to_string(out.failure) << " needs_repair " << out.needs_repair << ", " << out.holes_filled
                                                    << " holes filled, " << deleted << " deleted");
     DFP_CHECK(imported.is_valid());
     DT dt;
@@ -1061,7 +1071,8 @@ void t_division_small_random_cases()
          return distinct;
        }()).size() != moved.size())
       continue; // make_delaunay rejects duplicates (test_bad_input.cpp)
-    const auto np = DFP::parameters::strategy(DFP::Strategy::t_division, DFP::parameters::region_size(t));
+    const auto np =
+        DFP::parameters::strategy(DFP::Strategy::t_division, DFP::parameters::region_size(t)).tuning(unlimited_t_division());
     {
       Tr tr;
       Handles<Tr> handles;
@@ -1087,8 +1098,6 @@ void t_division_small_random_cases()
 
 int main()
 {
-  // No budget for Strategy::t_division: reach its repair whatever the damage.
-  DFP::internal::t_division_budget_factor() = std::numeric_limits<double>::infinity();
   const XYs uniform_5000 = uniform_xy(5000, 1001);
   {
     Scope scope("Epick");

@@ -18,6 +18,7 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
 #include <functional>
+#include <set>
 
 using namespace dfp_test;
 using K = CGAL::Exact_predicates_inexact_constructions_kernel;
@@ -43,7 +44,7 @@ DFP::Statistics make_and_check(Tr& tr, const Handles<Tr>& handles,
   check_is_cgal_delaunay(tr, points); // info i is point i: also checks the info
   DFP_CHECK_MSG(s.faces_in == faces_before, s.faces_in << " vs " << faces_before);
   DFP_CHECK(s.faces_certified <= s.faces_in);
-  DFP_CHECK_MSG(std::string(s.fallback_reason).empty() == !s.fell_back, s.fallback_reason);
+  DFP_CHECK_MSG((s.outcome == DFP::Outcome::ok) == !s.fell_back, to_string(s.outcome));
   DFP_CHECK_MSG(inverted > 0 || (s.faces_carved == 0 && s.holes_refilled == 0 && s.carve_rounds == 0),
                 s.faces_carved << " faces carved, " << s.holes_refilled << " holes refilled, "
                                << s.carve_rounds << " rounds, with every face ccw");
@@ -152,7 +153,7 @@ void test_time_steps(const char* name, CGAL::Random& rng)
     // A valid triangulation that needs few flips (about n/8 here) is repaired, not rebuilt;
     // the larger moves need about n/2 flips, near the default budget: either is allowed.
     if(relative < 0.1)
-      DFP_CHECK_MSG(!s.fell_back, s.fallback_reason << ", " << s.flips << " flips");
+      DFP_CHECK_MSG(!s.fell_back, to_string(s.outcome) << ", " << s.flips << " flips");
     else
       DFP_CHECK(s.fell_back || s.flips > 0);
   }
@@ -162,14 +163,14 @@ void test_time_steps(const char* name, CGAL::Random& rng)
     DFP_CHECK(inverted_faces(tr) == 0);
     const DFP::Statistics s = make_and_check(tr, handles);
     // Repaired in place: a flip of the infinite edge at the dented vertex, then Lawson.
-    DFP_CHECK_MSG(!s.fell_back, s.fallback_reason);
+    DFP_CHECK_MSG(!s.fell_back, to_string(s.outcome));
     DFP_CHECK(s.flips > 0);
   }
   {
     Scope step("shear x += 0.1 y (orientation preserving)");
     move_all<Tr>(handles, [](const Point& p) { return Point(p.x() + 0.1 * p.y(), p.y()); });
     const DFP::Statistics s = make_and_check(tr, handles);
-    DFP_CHECK_MSG(!s.fell_back, s.fallback_reason);
+    DFP_CHECK_MSG(!s.fell_back, to_string(s.outcome));
     DFP_CHECK(s.flips > 0);
   }
   for(const bool flips : {true, false}) {
@@ -283,7 +284,7 @@ void test_large_budget(const char* name, CGAL::Random& rng)
   build(tr, to_points<K>(clustered_points(n, rng)), handles);
   flip_randomly(tr, 50, rng);
   const DFP::Statistics s = make_and_check(tr, handles, DFP::parameters::max_flips(100 * n));
-  DFP_CHECK_MSG(!s.fell_back, s.fallback_reason);
+  DFP_CHECK_MSG(!s.fell_back, to_string(s.outcome));
   DFP_CHECK(s.flips > 0);
 }
 
@@ -542,16 +543,16 @@ void test_flip_log_survives_rollback(CGAL::Random& rng)
     bool hull_is_convex = false;
     I::Inline_flips<Tr> inline_flips{tr.number_of_vertices(), flips, touched, log};
     DFP_CHECK(I::certify_triangulation(tr, stack, tested, hull_is_convex, &bad, tr.number_of_faces(),
-                                       &inline_flips) == I::Outcome::ok);
+                                       &inline_flips) == DFP::Outcome::ok);
     DFP_CHECK(flips > 0 && log.size() == flips);
     I::untangle_by_flips(tr, bad, stack, log, touched);
     DFP_CHECK(!bad.empty());
     I::Carve_repair<Tr> carve(tr, true);
     for(const Tr::Face_handle f : bad)
       carve.carve_star(f->vertex(round % 3));
-    const I::Outcome why = carve.plan(I::default_carve_limits(tr.number_of_vertices()));
-    DFP_CHECK_MSG(why == I::Outcome::ok, I::fallback_reason(why));
-    if(why != I::Outcome::ok)
+    const DFP::Outcome why = carve.plan(I::default_carve_limits(tr.number_of_vertices()));
+    DFP_CHECK_MSG(why == DFP::Outcome::ok, to_string(why));
+    if(why != DFP::Outcome::ok)
       continue;
     carve.commit(stack);
     for(const auto& flip : log)
@@ -562,6 +563,113 @@ void test_flip_log_survives_rollback(CGAL::Random& rng)
     check_unchanged(tr, before);
   }
   DFP_CHECK(logged_on_carved_faces > 0); // the case the remapping is for did occur
+}
+
+// make_delaunay's early decision to rebuild (tds_certify.h, inverted_faces_exceed_early()): a
+// triangulation whose sampled faces are mostly inverted is rebuilt before any in-circle test or
+// flip; moderate moves are still repaired in place; damage outside the sample, or only inside
+// it, steers the call one way or the other, and the result is CGAL's DT either way. Run with
+// each concurrency (the rule comes before both certifications).
+void test_early_rebuild(CGAL::Random& rng)
+{
+  using Tr = DT_with_info<K>;
+  namespace I = DFP::internal;
+  const std::size_t n = 20000; // 40,000 faces: the sample is about 5% of them
+  const double spacing = 1. / std::sqrt(double(n));
+  const Points points = to_points<K>(uniform_points(n, rng));
+  const std::size_t max_bad = I::default_carve_limits(n).max_bad_faces;
+  // Builds DT(points), then moves the chosen vertices by Gaussian noise of sigma x spacing.
+  auto moved_by = [&](Tr& tr, Handles<Tr>& handles, double sigma, auto chosen) {
+    build(tr, points, handles);
+    const std::set<const void*> moved = chosen(tr);
+    for(std::size_t i = 0; i < n; ++i)
+      if(moved.count(&*handles[i]) > 0)
+        handles[i]->set_point(Point(points[i].x() + sigma * spacing * gaussian(rng),
+                                    points[i].y() + sigma * spacing * gaussian(rng)));
+  };
+  auto all = [](const Tr& tr) {
+    std::set<const void*> every;
+    for(auto v = tr.finite_vertices_begin(); v != tr.finite_vertices_end(); ++v)
+      every.insert(&*v);
+    return every;
+  };
+  {
+    Scope c("Gaussian moves of 0.5 spacing: rebuilt at once");
+    Tr tr;
+    Handles<Tr> handles;
+    moved_by(tr, handles, 0.5, all);
+    DFP_CHECK_MSG(inverted_faces(tr) > 3 * max_bad, inverted_faces(tr) << " inverted, limit " << max_bad);
+    DFP_CHECK(I::inverted_faces_exceed_early(tr, max_bad));
+    const DFP::Statistics s = make_and_check(tr, handles); // CGAL's DT, same handles and info
+    DFP_CHECK(s.fell_back);
+    DFP_CHECK_MSG(s.outcome == DFP::Outcome::too_many_inverted_faces, to_string(s.outcome));
+    DFP_CHECK_MSG(s.flips == 0 && s.edges_tested == 0, s.flips << " flips, " << s.edges_tested << " edges tested");
+    DFP_CHECK(s.faces_carved == 0 && s.points_reinserted == n);
+  }
+  {
+    Scope c("Gaussian moves of 0.5 spacing and two vertices at one point: throws, unchanged");
+    Tr tr;
+    Handles<Tr> handles;
+    moved_by(tr, handles, 0.5, all);
+    handles[123]->set_point(handles[4567]->point());
+    DFP_CHECK(I::inverted_faces_exceed_early(tr, max_bad));
+    const Snapshot<Tr> before(tr);
+    DFP_CHECK(throws_exception<DFP::Invalid_prediction>(
+        [&] { with_concurrency([&](auto tag) { return DFP::make_delaunay<decltype(tag)>(tr); }); }));
+    check_unchanged(tr, before);
+  }
+  {
+    Scope c("Gaussian moves of 0.05 spacing: repaired in place");
+    Tr tr;
+    Handles<Tr> handles;
+    moved_by(tr, handles, 0.05, all);
+    DFP_CHECK(inverted_faces(tr) > 0);
+    DFP_CHECK(!I::inverted_faces_exceed_early(tr, max_bad));
+    const DFP::Statistics s = make_and_check(tr, handles);
+    DFP_CHECK_MSG(!s.fell_back, to_string(s.outcome));
+    DFP_CHECK(s.flips > 0 && s.edges_tested > 0);
+  }
+  // The sample is the container's first faces: the vertices of those faces.
+  auto sampled_vertices = [](const Tr& tr) {
+    std::set<const void*> in_sample;
+    std::size_t k = 0;
+    for(auto f = tr.finite_faces_begin(); f != tr.finite_faces_end() && k < I::inverted_faces_sample; ++f, ++k)
+      for(int j = 0; j < 3; ++j)
+        in_sample.insert(&*f->vertex(j));
+    return in_sample;
+  };
+  {
+    Scope c("only the vertices of the sampled faces moved far: steered to a rebuild, same result");
+    Tr tr;
+    Handles<Tr> handles;
+    std::size_t sampled = 0;
+    moved_by(tr, handles, 0.5, [&](const Tr& t) {
+      const std::set<const void*> in_sample = sampled_vertices(t);
+      sampled = in_sample.size();
+      return in_sample;
+    });
+    DFP_CHECK_MSG(sampled < n / 2, sampled << " vertices in the sampled faces");
+    DFP_CHECK(inverted_faces(tr) > 0);
+    DFP_CHECK(I::inverted_faces_exceed_early(tr, max_bad));
+    const DFP::Statistics s = make_and_check(tr, handles);
+    DFP_CHECK(s.fell_back && s.outcome == DFP::Outcome::too_many_inverted_faces && s.flips == 0);
+  }
+  {
+    Scope c("every vertex but those of the sampled faces moved far: caught by the pass, same result");
+    Tr tr;
+    Handles<Tr> handles;
+    moved_by(tr, handles, 0.5, [&](const Tr& t) {
+      std::set<const void*> rest = all(t);
+      for(const void* v : sampled_vertices(t))
+        rest.erase(v);
+      return rest;
+    });
+    DFP_CHECK(inverted_faces(tr) > 3 * max_bad);
+    DFP_CHECK(!I::inverted_faces_exceed_early(tr, max_bad));
+    const DFP::Statistics s = make_and_check(tr, handles);
+    DFP_CHECK(s.fell_back && s.outcome == DFP::Outcome::too_many_inverted_faces);
+    DFP_CHECK(s.edges_tested > 0 || current_concurrency() != Concurrency::sequential);
+  }
 }
 
 template <class Tr>
@@ -585,6 +693,7 @@ int main()
     test_type<T2_with_info<K, int>>("Triangulation_2 with int info", rng);
   });
   DFP_RUN(test_flip_log_survives_rollback(rng));
+  for_each_concurrency([&] { DFP_RUN(test_early_rebuild(rng)); });
   DFP_RUN(test_colored<DT_colored<K>>("Delaunay_triangulation_2 with a user's vertex base", rng));
   DFP_RUN(test_colored<T2_colored<K>>("Triangulation_2 with a user's vertex base", rng));
   {

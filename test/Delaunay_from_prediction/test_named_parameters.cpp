@@ -8,7 +8,8 @@
 // screen_prediction(bool): good predictions pass the sampling screen at n >= 4096, random
 // triples at n >= 5000 are rejected by it, and fall back without it with strategy(flips) (the
 // default strategy may repair them locally instead); chaining with CGAL's parameters, and the
-// package's chained as CGAL's are (`max_flips(0).strategy(s)`).
+// package's chained as CGAL's are (`max_flips(0).strategy(s)`); visitor(v): every stage seen
+// in begin/end pairs, in the pipeline's order; tuning(t): its thresholds are read.
 
 #include <CGAL/Delaunay_from_prediction_2.h> // first: the header is self-contained
 
@@ -16,7 +17,11 @@
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
+#include <functional>
 #include <list>
+#include <string>
+#include <utility>
+#include <vector>
 
 using namespace dfp_test;
 using K = CGAL::Exact_predicates_inexact_constructions_kernel;
@@ -59,7 +64,7 @@ void test_max_flips(CGAL::Random& rng)
     const DFP::Statistics st = run(points, faces, NP::max_flips(0));
     DFP_CHECK(st.fell_back);
     DFP_CHECK(st.flips == 0);
-    DFP_CHECK(std::string(st.fallback_reason).size() > 0);
+    DFP_CHECK(st.outcome != DFP::Outcome::ok);
     DFP_CHECK(st.faces_certified == 0);
   }
   {
@@ -235,7 +240,7 @@ void test_screen(CGAL::Random& rng)
       Scope c("the DT after n/100 flips");
       const DFP::Statistics st =
           run(points, flipped_delaunay_faces<K>(points, n / 100, rng), NP::screen_prediction(screen));
-      DFP_CHECK_MSG(!st.fell_back, st.fallback_reason);
+      DFP_CHECK_MSG(!st.fell_back, to_string(st.outcome));
       DFP_CHECK(st.flips > 0);
     }
     {
@@ -243,7 +248,7 @@ void test_screen(CGAL::Random& rng)
       const DFP::Statistics st =
           run(points, delaunay_faces<K>(Points(points.begin(), points.begin() + n / 2)),
               NP::screen_prediction(screen));
-      DFP_CHECK_MSG(!st.fell_back, st.fallback_reason);
+      DFP_CHECK_MSG(!st.fell_back, to_string(st.outcome));
     }
     // With the local repair (the default strategy), random triples may be repaired rather
     // than rebuilt if the budgets allow it; with strategy(flips) they always fall back.
@@ -254,8 +259,8 @@ void test_screen(CGAL::Random& rng)
           run(points, triples, NP::strategy(DFP::Strategy::flips, NP::screen_prediction(screen)));
       DFP_CHECK(st.fell_back);
       if(screen)
-        DFP_CHECK_MSG(reason_is(st, DFP::internal::Outcome::screen_rejected),
-                      st.fallback_reason);
+        DFP_CHECK_MSG(reason_is(st, DFP::Outcome::screen_rejected),
+                      to_string(st.outcome));
       const DFP::Statistics automatic = run(points, triples, NP::screen_prediction(screen));
       DFP_CHECK(repaired_or_rebuilt(automatic));
       if(screen)
@@ -270,7 +275,7 @@ void test_screen(CGAL::Random& rng)
       DFP_CHECK(st.fell_back);
       // The screen draws from the faces once they are read, whatever the range.
       if(screen)
-        DFP_CHECK_MSG(reason_is(st, DFP::internal::Outcome::screen_rejected), st.fallback_reason);
+        DFP_CHECK_MSG(reason_is(st, DFP::Outcome::screen_rejected), to_string(st.outcome));
       const DFP::Statistics automatic = run(points, faces, triples, NP::screen_prediction(screen));
       DFP_CHECK(repaired_or_rebuilt(automatic));
     }
@@ -284,8 +289,8 @@ void test_screen(CGAL::Random& rng)
     check_statistics(st, triples, points, dt);
     // The screen (on by default) rejects random triples before any repair is tried.
     DFP_CHECK(st.fell_back);
-    DFP_CHECK_MSG(reason_is(st, DFP::internal::Outcome::screen_rejected),
-                  st.fallback_reason);
+    DFP_CHECK_MSG(reason_is(st, DFP::Outcome::screen_rejected),
+                  to_string(st.outcome));
   }
   {
     Scope s("integer grid 70 x 70 (co-circular: on-circle points are not inside), screen on");
@@ -296,9 +301,188 @@ void test_screen(CGAL::Random& rng)
   }
 }
 
+// A visitor that records each stage_begin (true) and stage_end (false), in order.
+struct Stage_recorder
+{
+  std::vector<std::pair<bool, DFP::Stage>> events;
+  void stage_begin(DFP::Stage s) { events.emplace_back(true, s); }
+  void stage_end(DFP::Stage s) { events.emplace_back(false, s); }
+};
+
+std::string stage_names(const std::vector<DFP::Stage>& stages)
+{
+  std::string names;
+  for(const DFP::Stage s : stages)
+    names += std::string(names.empty() ? "" : " ") + DFP::to_string(s);
+  return names;
+}
+
+// The stages `r` saw, checked to begin and end in matching pairs, one after the other.
+std::vector<DFP::Stage> paired_stages(const Stage_recorder& r)
+{
+  std::vector<DFP::Stage> stages;
+  DFP_CHECK_MSG(r.events.size() % 2 == 0, r.events.size() << " events");
+  for(std::size_t k = 0; k < r.events.size(); ++k) {
+    DFP_CHECK_MSG(r.events[k].first == (k % 2 == 0), "event " << k << " " << DFP::to_string(r.events[k].second));
+    if(k % 2 == 0)
+      stages.push_back(r.events[k].second);
+    else
+      DFP_CHECK_MSG(r.events[k].second == stages.back(), "stage_end(" << DFP::to_string(r.events[k].second)
+                                                                      << ") after stage_begin(" << DFP::to_string(stages.back()) << ")");
+  }
+  return stages;
+}
+
+// A visitor sees every stage begin and end in pairs, in the order the pipeline runs them, for
+// both entry points, sequential and parallel: a correct prediction (no rebuild), one that falls
+// back (rebuild), make_delaunay with inverted faces (untangled, carved).
+void test_visitor(CGAL::Random& rng)
+{
+  using S = DFP::Stage;
+  using Stages = std::vector<S>;
+  const Points points = to_points<K>(uniform_points(2000, rng));
+  const Faces delaunay = faces_by_info(indexed_delaunay<K>(points));
+  const Faces flipped = flipped_delaunay_faces<K>(points, 40, rng);
+  auto expect = [](const Stage_recorder& r, const Stages& expected) {
+    const Stages got = paired_stages(r);
+    DFP_CHECK_MSG(got == expected, "saw: " << stage_names(got) << "; expected: " << stage_names(expected));
+  };
+  for_each_concurrency([&] {
+    auto dfp = [&](const Faces& faces, const auto& np) {
+      DT dt;
+      Stage_recorder r;
+      const DFP::Statistics st = with_concurrency([&](auto tag) {
+        return DFP::delaunay_from_prediction<decltype(tag)>(points, faces, dt, np.visitor(std::ref(r)));
+      });
+      check_is_cgal_delaunay(dt, points);
+      return std::make_pair(st, r);
+    };
+    {
+      Scope s("delaunay_from_prediction, Delaunay faces");
+      const auto [st, r] = dfp(delaunay, NP::max_flips(std::size_t(-1)));
+      DFP_CHECK(!st.fell_back);
+      expect(r, {S::check, S::screen, S::order, S::import, S::flips});
+    }
+    {
+      Scope s("delaunay_from_prediction, max_flips(0): falls back");
+      const auto [st, r] = dfp(flipped, NP::max_flips(0));
+      DFP_CHECK(st.fell_back);
+      expect(r, {S::check, S::screen, S::order, S::import, S::rebuild});
+    }
+    auto md = [&](DT& tr, const auto& np) {
+      Stage_recorder r;
+      const DFP::Statistics st =
+          with_concurrency([&](auto tag) { return DFP::make_delaunay<decltype(tag)>(tr, np.visitor(std::ref(r))); });
+      return std::make_pair(st, r);
+    };
+    {
+      Scope s("make_delaunay, 20 random flips");
+      DT tr;
+      Handles<DT> handles;
+      build(tr, points, handles);
+      flip_randomly(tr, 20, rng);
+      const auto [st, r] = md(tr, NP::max_flips(std::size_t(-1)));
+      check_is_cgal_delaunay(tr, points);
+      DFP_CHECK(!st.fell_back);
+      expect(r, {S::check, S::certify, S::flips});
+    }
+    {
+      Scope s("make_delaunay, max_flips(0) after 20 flips: falls back");
+      DT tr;
+      Handles<DT> handles;
+      build(tr, points, handles);
+      flip_randomly(tr, 20, rng);
+      const auto [st, r] = md(tr, NP::max_flips(0));
+      check_is_cgal_delaunay(tr, points);
+      DFP_CHECK(st.fell_back);
+      expect(r, {S::check, S::certify, S::rebuild});
+    }
+    {
+      Scope s("make_delaunay, 8 vertices moved by 3 mean spacings: inverted faces");
+      DT tr;
+      Handles<DT> handles;
+      build(tr, points, handles);
+      Points moved = points;
+      for(std::size_t k = 0; k < 8; ++k) {
+        const std::size_t i = std::size_t(rng.get_int(0, int(points.size())));
+        moved[i] = Point(points[i].x() + rng.get_double(-0.06, 0.06), points[i].y() + rng.get_double(-0.06, 0.06));
+        handles[i]->set_point(moved[i]);
+      }
+      const auto [st, r] = md(tr, NP::strategy(DFP::Strategy::carve));
+      check_is_cgal_delaunay(tr, moved);
+      DFP_CHECK_MSG(!st.fell_back, to_string(st.outcome));
+      const Stages got = paired_stages(r);
+      DFP_CHECK_MSG(got == Stages({S::check, S::certify, S::untangle, S::carve, S::flips}) ||
+                        got == Stages({S::check, S::certify, S::untangle, S::flips}),
+                    stage_names(got));
+      DFP_CHECK_MSG(st.faces_carved == 0 || got.size() == 5, stage_names(got) << ", " << st.faces_carved << " carved");
+    }
+  });
+  {
+    Scope s("a visitor given by value is copied");
+    Stage_recorder r;
+    DT dt;
+    DFP::delaunay_from_prediction(points, delaunay, dt, NP::visitor(r));
+    DFP_CHECK(r.events.empty());
+  }
+}
+
+// The tuning parameter is read: Tuning::t_division_budget_factor decides whether the
+// t-division divides (Statistics::regions), Tuning::min_points_per_block and
+// min_threads_for_blocks whether a parallel rebuild is made by regions (the vertices come out
+// block by block, another order than the sequential build's).
+void test_tuning(CGAL::Random& rng)
+{
+  const Points points = to_points<K>(uniform_points(3000, rng));
+  {
+    Scope s("t_division_budget_factor");
+    auto regions_with = [&](double factor) {
+      DT tr;
+      Handles<DT> handles;
+      build(tr, points, handles);
+      DFP::Tuning t;
+      t.t_division_budget_factor = factor;
+      CGAL::Random same(5);
+      flip_randomly(tr, 30, same);
+      const DFP::Statistics st = DFP::make_delaunay(tr, NP::strategy(DFP::Strategy::t_division).tuning(t));
+      check_is_cgal_delaunay(tr, points);
+      return st.regions;
+    };
+    DFP_CHECK(regions_with(0) == 0);
+    DFP_CHECK(regions_with(1e9) > 0);
+  }
+  const Faces triples = random_triples(points.size(), 2 * points.size(), rng);
+  DFP::Tuning blocks, no_blocks;
+  blocks.min_points_per_block = 200;
+  no_blocks.min_threads_for_blocks = 1000;
+  for_each_concurrency([&] {
+    auto vertex_order = [&](const DFP::Tuning& t) {
+      DT dt;
+      const DFP::Statistics st = with_concurrency([&](auto tag) {
+        return DFP::delaunay_from_prediction<decltype(tag)>(points, triples, dt, NP::tuning(t));
+      });
+      DFP_CHECK(st.fell_back);
+      check_is_cgal_delaunay(dt, points);
+      std::vector<std::size_t> order;
+      for(auto v = dt.finite_vertices_begin(); v != dt.finite_vertices_end(); ++v)
+        order.push_back(v->info());
+      return order;
+    };
+    const bool by_regions = current_concurrency() == Concurrency::parallel_2_threads;
+#ifdef CGAL_LINKED_WITH_TBB
+    DFP_CHECK((vertex_order(blocks) != vertex_order(no_blocks)) == by_regions);
+#else
+    (void)by_regions;
+    DFP_CHECK(vertex_order(blocks) == vertex_order(no_blocks));
+#endif
+  });
+}
+
 int main()
 {
   CGAL::Random rng(8080);
+  DFP_RUN(test_visitor(rng));
+  DFP_RUN(test_tuning(rng));
   DFP_RUN(test_max_flips(rng));
   DFP_RUN(test_make_delaunay_budget(rng));
   DFP_RUN(test_make_delaunay_boundary());

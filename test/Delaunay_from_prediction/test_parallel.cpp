@@ -19,7 +19,7 @@
 
 #include <CGAL/Delaunay_from_predicted_edges_2.h>
 #include <CGAL/Delaunay_from_prediction/brio_dc.h>
-#include <CGAL/Delaunay_from_prediction/internal/prediction_generators.h>
+#include <CGAL/Delaunay_from_prediction/internal/measures/prediction_generators.h>
 #include <CGAL/Delaunay_from_prediction/spanning_graph.h>
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -156,7 +156,7 @@ struct Parallel_test
           return with_concurrency([&](auto tag) { return DFP::make_delaunay<decltype(tag)>(tr, np); });
         });
         check_is_cgal_delaunay(tr, vertex_points);
-        if(current_concurrency() != Concurrency::sequential && reason_is(st, DFP::internal::Outcome::too_many_inverted_faces))
+        if(current_concurrency() != Concurrency::sequential && reason_is(st, DFP::Outcome::too_many_inverted_faces))
           ++parallel_stops;
       } catch(const DFP::Invalid_prediction&) {
         // Two vertices moved onto the same point: then the triangulation is as it was.
@@ -419,7 +419,7 @@ void untangling_in_cells(CGAL::Random& rng)
       std::size_t tested = 0;
       bool hull_is_convex = false;
       DFP_CHECK(I::certify_triangulation(tr, stack, tested, hull_is_convex, &bad, tr.number_of_faces()) ==
-                I::Outcome::ok);
+                DFP::Outcome::ok);
       DFP_CHECK_MSG(bad.size() >= 4 * I::min_faces_to_untangle_in_cells, bad.size());
       const std::size_t stacked = stack.size();
       I::Flip_log<Tr> log;
@@ -463,7 +463,7 @@ void first_malformed_face_is_named(CGAL::Random& rng)
   });
 }
 
-// The region-parallel build (region_parallel_build.h) with 2 to 64 blocks, so that small sets
+// The region-parallel build (block_parallel_build.h) with 2 to 64 blocks, so that small sets
 // have many seams, on degenerate sets too: CGAL's DT with the duplicates counted, the blocks'
 // kept faces and the seams' faces meeting at walls that are all locally Delaunay (so nothing
 // was left to repair), and faces kept (not everything redone in the seams). A set on one line
@@ -482,8 +482,8 @@ void regions_build(CGAL::Random& rng)
         Scope b(blocks, " blocks");
         DT_with_info<K> dt;
         DFP::Statistics st;
-        DFP::internal::Region_build_report report;
-        const bool built = DFP::internal::build_by_regions(dt, points.begin(), n, st, blocks, parallel, &report);
+        DFP::internal::Block_build_counts report;
+        const bool built = DFP::internal::build_in_blocks(dt, points.begin(), n, st, blocks, parallel, &report);
         DFP_CHECK(built == (reference.dimension() == 2));
         if(!built) {
           DFP_CHECK(dt.number_of_vertices() == 0 && dt.tds().is_valid());
@@ -513,20 +513,21 @@ void regions_build(CGAL::Random& rng)
   run(CGAL::Exact_predicates_exact_constructions_kernel(), "Epeck grid (co-circular)", grid_points(20, 20, rng));
 }
 
-// The entry points build by regions on two threads once the size threshold is lowered: a
+// The entry points build by regions on two threads once the size threshold is lowered (Tuning): a
 // prediction that falls back, a rebuild requested, make_delaunay after large moves.
 void regions_in_entry_points(CGAL::Random& rng)
 {
   using K = CGAL::Exact_predicates_inexact_constructions_kernel;
-  auto& thresholds = DFP::internal::region_build_thresholds();
-  const DFP::internal::Region_build_thresholds defaults = thresholds;
-  DFP_CHECK(DFP::internal::default_region_blocks(std::size_t(1) << 20, 1) == 1);
-  DFP_CHECK(DFP::internal::default_region_blocks(std::size_t(1) << 20, 2) == 4);
-  DFP_CHECK(DFP::internal::default_region_blocks(std::size_t(1) << 20, 8) == 16);
-  DFP_CHECK(DFP::internal::default_region_blocks(std::size_t(1) << 16, 8) == 2);
-  thresholds.min_points_per_block = 200;
+  DFP_CHECK(DFP::internal::default_block_count(std::size_t(1) << 20, 1) == 1);
+  DFP_CHECK(DFP::internal::default_block_count(std::size_t(1) << 20, 2) == 4);
+  DFP_CHECK(DFP::internal::default_block_count(std::size_t(1) << 20, 8) == 16);
+  DFP_CHECK(DFP::internal::default_block_count(std::size_t(1) << 16, 8) == 2);
+  DFP::Tuning tuning; // blocks of 200 points, passed to every call below
+  tuning.min_points_per_block = 200;
+  const auto small_blocks = DFP::parameters::tuning(tuning);
   const std::size_t n = 3000;
-  DFP_CHECK(DFP::internal::default_region_blocks(n, 2) == 4 && DFP::internal::default_region_blocks(n, 1) == 1);
+  DFP_CHECK(DFP::internal::default_block_count(n, 2, tuning) == 4 &&
+            DFP::internal::default_block_count(n, 1, tuning) == 1);
   const std::vector<K::Point_2> points = to_points<K>(with_duplicates(uniform_points(n, rng), 50, rng));
   const XYs grid = grid_points(40, 40, rng);
   const Faces triples = random_triples(points.size(), 2 * points.size(), rng);
@@ -535,7 +536,7 @@ void regions_in_entry_points(CGAL::Random& rng)
       Scope s("random triples");
       DT_with_info<K> dt;
       const DFP::Statistics st =
-          with_concurrency([&](auto tag) { return DFP::delaunay_from_prediction<decltype(tag)>(points, triples, dt); });
+          with_concurrency([&](auto tag) { return DFP::delaunay_from_prediction<decltype(tag)>(points, triples, dt, small_blocks); });
       DFP_CHECK(st.fell_back && st.duplicate_points == 50);
       check_is_cgal_delaunay(dt, points);
     }
@@ -549,7 +550,7 @@ void regions_in_entry_points(CGAL::Random& rng)
         moved.push_back(v->point());
       }
       with_concurrency([&](auto tag) {
-        return DFP::make_delaunay<decltype(tag)>(tr, DFP::parameters::strategy(DFP::Strategy::rebuild));
+        return DFP::make_delaunay<decltype(tag)>(tr, DFP::parameters::strategy(DFP::Strategy::rebuild).tuning(tuning));
       });
       check_is_cgal_delaunay(tr, moved);
       for(auto v = tr.finite_vertices_begin(); v != tr.finite_vertices_end(); ++v)
@@ -579,7 +580,8 @@ void regions_in_entry_points(CGAL::Random& rng)
       };
       const Faces before = face_set();
       try {
-        const DFP::Statistics st = with_concurrency([&](auto tag) { return DFP::make_delaunay<decltype(tag)>(tr); });
+        const DFP::Statistics st =
+            with_concurrency([&](auto tag) { return DFP::make_delaunay<decltype(tag)>(tr, small_blocks); });
         DFP_CHECK(!duplicate && st.fell_back);
         check_is_cgal_delaunay(tr, moved);
       } catch(const DFP::Invalid_prediction&) {
@@ -587,7 +589,6 @@ void regions_in_entry_points(CGAL::Random& rng)
       }
     }
   });
-  thresholds = defaults;
 }
 
 int main()

@@ -112,7 +112,7 @@ struct Models_test
     DT_with_info<K> dt;
     const DFP::Statistics st = DFP::delaunay_from_prediction(
         points, faces, dt, DFP::parameters::max_flips(std::numeric_limits<std::size_t>::max()));
-    DFP_CHECK_MSG(!st.fell_back, st.fallback_reason);
+    DFP_CHECK_MSG(!st.fell_back, to_string(st.outcome));
     DFP_CHECK_MSG(st.points_unused == 0, st.points_unused);
     DFP_CHECK_MSG(st.flips == (m.D_flip_upper ? *m.D_flip_upper : std::size_t(-1)), st.flips << "; " << describe(m));
     check_is_cgal_delaunay(dt, points);

@@ -2,7 +2,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Author(s): Delaunay_from_prediction contributors
 //
-// Strategy::regions (Theorem 5.4 in practical form, internal/prediction_region_build.h): the
+// Strategy::regions (Theorem 5.4 in practical form, internal/build/prediction_regions_build.h): the
 // prediction divided into regions, each triangulated on its own, the faces the grid vouches
 // for kept, the seams triangulated again. On predictions of every kind (right, a few flips,
 // points moved by 0.1 to 1 spacing, the rho model with both completions, faces deleted) it
@@ -38,7 +38,7 @@ namespace {
 std::string describe(const DFP::Statistics& s)
 {
   std::ostringstream out;
-  out << "fell_back=" << s.fell_back << " (" << s.fallback_reason << ") regions=" << s.regions
+  out << "fell_back=" << s.fell_back << " (" << to_string(s.outcome) << ") regions=" << s.regions
       << " seam points=" << s.boundary_vertices << " reinserted=" << s.points_reinserted
       << " certified=" << s.faces_certified << " faces_in=" << s.faces_in;
   return out.str();
@@ -70,7 +70,7 @@ void check_own_path(const DFP::Statistics& s, std::size_t n, std::size_t max_sea
 {
   if(max_seam_points == 0)
     max_seam_points = n / 2;
-  DFP_CHECK_MSG(!s.fell_back && std::string(s.fallback_reason).empty(), describe(s));
+  DFP_CHECK_MSG(!s.fell_back && (s.outcome == DFP::Outcome::ok), describe(s));
   DFP_CHECK_MSG(s.regions >= 2, describe(s));
   DFP_CHECK_MSG(s.points_reinserted == n, describe(s));
   DFP_CHECK_MSG(s.boundary_vertices > 0 && s.boundary_vertices < max_seam_points, describe(s));
@@ -128,7 +128,7 @@ void predictions(std::size_t n, std::uint64_t seed)
           triples.push_back(f);
       }
       const DFP::Statistics s = from_faces(points, triples, np);
-      DFP_CHECK_MSG(s.fell_back && reason_is(s, DFP::internal::Outcome::regions_interleave), describe(s));
+      DFP_CHECK_MSG(s.fell_back && reason_is(s, DFP::Outcome::regions_interleave), describe(s));
       DFP_CHECK_MSG(s.points_reinserted == n && s.boundary_vertices == 0, describe(s));
     }
   });
@@ -181,7 +181,7 @@ void region_sizes(std::size_t n, std::uint64_t seed)
     Scope st("t = 4 n");
     const DFP::Statistics s =
         from_faces(points, faces, DFP::parameters::strategy(DFP::Strategy::regions, DFP::parameters::region_size(4 * n)));
-    DFP_CHECK_MSG(s.fell_back && reason_is(s, DFP::internal::Outcome::too_few_regions) && s.regions == 1, describe(s));
+    DFP_CHECK_MSG(s.fell_back && reason_is(s, DFP::Outcome::too_few_regions) && s.regions == 1, describe(s));
   }
 }
 

@@ -107,7 +107,7 @@ void test_good_predictions(const Points& points, CGAL::Random& rng)
     {
       Scope budget("max_flips(100 n)");
       const DFP::Statistics s = run<DT>(points, faces, DFP::parameters::max_flips(100 * n));
-      DFP_CHECK_MSG(!s.fell_back, s.fallback_reason);
+      DFP_CHECK_MSG(!s.fell_back, to_string(s.outcome));
       DFP_CHECK_MSG(s.flips >= wrong, s.flips << " flips, " << wrong << " wrong edges");
       DFP_CHECK(s.edges_not_locally_delaunay >= 1 && s.edges_not_locally_delaunay <= wrong);
       DFP_CHECK(s.edges_tested == interior_edges(faces.size(), n));
@@ -367,7 +367,7 @@ void test_subsets_and_duplicates(const Points& points, CGAL::Random& rng)
     const Points half(points.begin(), points.begin() + std::ptrdiff_t(n / 2));
     const Faces faces = delaunay_faces<K>(half);
     const DFP::Statistics s = run<DT>(points, faces);
-    DFP_CHECK_MSG(!s.fell_back, s.fallback_reason);
+    DFP_CHECK_MSG(!s.fell_back, to_string(s.outcome));
     DFP_CHECK(s.points_unused == n - n / 2);
     DFP_CHECK(s.points_reinserted == n - n / 2);
     DFP_CHECK(s.faces_certified < s.faces_in);
@@ -379,7 +379,7 @@ void test_subsets_and_duplicates(const Points& points, CGAL::Random& rng)
       for(std::size_t& i : f)
         i += n - n / 10;
     const DFP::Statistics s = run<DT>(points, faces);
-    DFP_CHECK_MSG(!s.fell_back, s.fallback_reason);
+    DFP_CHECK_MSG(!s.fell_back, to_string(s.outcome));
     DFP_CHECK(s.points_unused == n - n / 10);
   }
   {
@@ -551,14 +551,14 @@ void test_statistics_stream(const Points& points)
   DFP_CHECK_MSG(has_line(text, "flips: 0"), text);
   DFP_CHECK_MSG(has_line(text, "fell_back: false"), text);
   DFP_CHECK_MSG(has_line(text, "edges_tested: " + std::to_string(good.edges_tested)), text);
-  DFP_CHECK_MSG(text.find("regions:") == std::string::npos && text.find("fallback_reason") == std::string::npos, text);
+  DFP_CHECK_MSG(text.find("regions:") == std::string::npos && text.find("outcome") == std::string::npos, text);
   DFP::Statistics bad;
   bad.fell_back = true;
   bad.regions = 7;
-  bad.fallback_reason = "a face is degenerate";
+  bad.outcome = DFP::Outcome::degenerate_face;
   const std::string bad_text = text_of(bad);
   DFP_CHECK_MSG(has_line(bad_text, "fell_back: true") && has_line(bad_text, "regions: 7") &&
-                    has_line(bad_text, "fallback_reason: a face is degenerate"),
+                    has_line(bad_text, "outcome: a face is degenerate (its points are collinear or equal)"),
                 bad_text);
   DFP_CHECK_MSG(bad_text.find("edges_tested") == std::string::npos, bad_text);
 }

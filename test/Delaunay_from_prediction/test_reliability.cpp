@@ -21,7 +21,7 @@
 
 #include "test_util.h"
 
-#include <CGAL/Delaunay_from_prediction/internal/random.h>
+#include <CGAL/Delaunay_from_prediction/internal/toolbox/random.h>
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Simple_cartesian.h>
@@ -49,7 +49,7 @@ std::string describe(const DFP::Statistics& s)
   out << "faces_in=" << s.faces_in << " certified=" << s.faces_certified << " flips=" << s.flips
       << " reinserted=" << s.points_reinserted << " fell_back=" << s.fell_back << " unused=" << s.points_unused
       << " duplicates=" << s.duplicate_points << " carved=" << s.faces_carved << " holes=" << s.holes_refilled
-      << " rounds=" << s.carve_rounds << " reason='" << s.fallback_reason << "'";
+      << " rounds=" << s.carve_rounds << " reason='" << to_string(s.outcome) << "'";
   return out.str();
 }
 
@@ -392,7 +392,7 @@ void perfect_prediction_at_scale(std::size_t n, double scale, double offset, std
       Scope stats_scope("make_delaunay after moves ", describe(s));
       if(dt.number_of_vertices() == n) // info i is the index of moved[i]
         check_is_cgal_delaunay(dt, moved);
-      DFP_CHECK(!std::string(s.fallback_reason).empty() || !s.fell_back);
+      DFP_CHECK(!(s.outcome == DFP::Outcome::ok) || !s.fell_back);
     } catch(const DFP::Invalid_prediction&) {
       // two vertices moved onto the same point (rounding at an offset): a documented answer
     }

@@ -19,7 +19,7 @@
 
 #include <CGAL/Delaunay_from_predicted_edges_2.h> // both edge entry points in one unit
 #include <CGAL/Delaunay_from_prediction_2.h>
-#include <CGAL/Delaunay_from_prediction/internal/union_find.h>
+#include <CGAL/Delaunay_from_prediction/internal/toolbox/union_find.h>
 
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -337,7 +337,7 @@ void faces_with_crossings()
         DFP_CHECK(st.faces_certified == st.faces_in);
       if(per_mille == 3) // repaired locally, not rebuilt
         DFP_CHECK_MSG(!st.fell_back && st.faces_carved > 0 && st.points_reinserted >= chosen.size(),
-                      st.fallback_reason << ", " << st.faces_carved << " carved, " << st.points_reinserted
+                      to_string(st.outcome) << ", " << st.faces_carved << " carved, " << st.points_reinserted
                                          << " reinserted");
     }
     {
@@ -349,7 +349,7 @@ void faces_with_crossings()
       check_is_cgal_delaunay(dt, points);
       check_statistics(st, crossing, points, dt);
       DFP_CHECK(st.fell_back);
-      DFP_CHECK_MSG(reason_is(st, DFP::internal::Outcome::spanning_tree_requested), st.fallback_reason);
+      DFP_CHECK_MSG(reason_is(st, DFP::Outcome::spanning_tree_requested), to_string(st.outcome));
       DFP_CHECK_MSG(st.points_located > n / 2, st.points_located);
       DFP_CHECK_MSG(st.faces_visited < 6 * st.points_located, st.faces_visited << " faces for " << st.points_located);
     }

@@ -2,7 +2,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Author(s): Delaunay_from_prediction contributors
 //
-// Strategy::t_division (Theorem 2.1, internal/region_repair.h) with 8 times its default budget
+// Strategy::t_division (Theorem 2.1, internal/repair/t_division_repair.h) with 8 times its default budget
 // (the default hands a damage of m marks in regions of t faces to the carve past m t = 0.15 n,
 // where the division would cost more than a rebuild; at 20,000 points that is 4 marks with the
 // default t = 625, 1 mark with t = 4096): on
@@ -33,10 +33,19 @@ using Random = DFP::internal::Splitmix64;
 
 namespace {
 
+// The t-division's budget raised eightfold (Tuning::t_division_budget_factor): its repair is
+// reached on small, damaged inputs. Every t-division call of this file passes it.
+DFP::Tuning raised_budget()
+{
+  DFP::Tuning t;
+  t.t_division_budget_factor = 8;
+  return t;
+}
+
 std::string describe(const DFP::Statistics& s)
 {
   std::ostringstream out;
-  out << "fell_back=" << s.fell_back << " (" << s.fallback_reason << ") regions=" << s.regions
+  out << "fell_back=" << s.fell_back << " (" << to_string(s.outcome) << ") regions=" << s.regions
       << " bad_regions=" << s.bad_regions << " V_B=" << s.boundary_vertices << " carved=" << s.faces_carved
       << " holes=" << s.holes_refilled << " reinserted=" << s.points_reinserted << " flips=" << s.flips
       << " certified=" << s.faces_certified << " faces_in=" << s.faces_in;
@@ -86,7 +95,7 @@ void moved_few(const std::string& label, std::size_t n, std::size_t moved, std::
   const auto points = current_points(handles);
   DFP_CHECK_MSG(inverted_faces(tr) > 0, "the moves inverted no face");
   const DFP::Statistics s =
-      DFP::make_delaunay(tr, DFP::parameters::strategy(DFP::Strategy::t_division));
+      DFP::make_delaunay(tr, DFP::parameters::strategy(DFP::Strategy::t_division).tuning(raised_budget()));
   check_local(s, n, moved * 3);
   check_handles(tr, handles, points);
   check_is_cgal_delaunay(tr, points);
@@ -108,7 +117,7 @@ void hull_dented(std::size_t n, std::uint64_t seed)
       lowest = v;
   lowest->set_point(Epick::Point_2(lowest->point().x(), lowest->point().y() + 3.0 / std::sqrt(double(n))));
   const auto points = current_points(handles);
-  const DFP::Statistics s = DFP::make_delaunay(tr, DFP::parameters::strategy(DFP::Strategy::t_division));
+  const DFP::Statistics s = DFP::make_delaunay(tr, DFP::parameters::strategy(DFP::Strategy::t_division).tuning(raised_budget()));
   check_local(s, n, 4);
   check_handles(tr, handles, points);
   check_is_cgal_delaunay(tr, points);
@@ -126,7 +135,7 @@ void from_prediction(std::size_t n, std::uint64_t seed)
     const Faces faces = DFP::k_flip_prediction(points, 6, seed + 1);
     DT dt;
     const DFP::Statistics s =
-        DFP::delaunay_from_prediction(points, faces, dt, DFP::parameters::strategy(DFP::Strategy::t_division));
+        DFP::delaunay_from_prediction(points, faces, dt, DFP::parameters::strategy(DFP::Strategy::t_division).tuning(raised_budget()));
     check_local(s, n, 12);
     DFP_CHECK_MSG(s.points_reinserted > 0, describe(s)); // the vertices inside the bad regions
     check_is_cgal_delaunay(dt, points);
@@ -137,7 +146,7 @@ void from_prediction(std::size_t n, std::uint64_t seed)
     DFP_CHECK(faces.size() < dt_faces.size());
     DT dt;
     const DFP::Statistics s =
-        DFP::delaunay_from_prediction(points, faces, dt, DFP::parameters::strategy(DFP::Strategy::t_division));
+        DFP::delaunay_from_prediction(points, faces, dt, DFP::parameters::strategy(DFP::Strategy::t_division).tuning(raised_budget()));
     // The holes are filled by ear clipping; the regions are then bad where the fill is not
     // Delaunay (a quadrilateral hole with the wrong diagonal), or none is.
     DFP_CHECK_MSG(!s.fell_back && s.holes_refilled > 0, describe(s));
@@ -164,7 +173,7 @@ void region_sizes(std::size_t n, std::uint64_t seed)
     const auto points = current_points(handles);
     const std::size_t faces = tr.number_of_faces();
     const DFP::Statistics s = DFP::make_delaunay(
-        tr, DFP::parameters::strategy(DFP::Strategy::t_division, DFP::parameters::region_size(t)));
+        tr, DFP::parameters::strategy(DFP::Strategy::t_division, DFP::parameters::region_size(t)).tuning(raised_budget()));
     DFP_CHECK_MSG(!s.fell_back, describe(s));
     DFP_CHECK_MSG(s.regions >= faces / t && s.regions <= 2 * (faces / t) + 2, describe(s) << ", " << faces << " faces");
     DFP_CHECK_MSG(s.boundary_vertices < last_boundary, describe(s));
@@ -198,7 +207,7 @@ void heavy_damage(std::size_t n, std::uint64_t seed)
     copy_handles[i]->set_point(moved);
   }
   const auto points = current_points(handles);
-  const DFP::Statistics s = DFP::make_delaunay(tr, DFP::parameters::strategy(DFP::Strategy::t_division));
+  const DFP::Statistics s = DFP::make_delaunay(tr, DFP::parameters::strategy(DFP::Strategy::t_division).tuning(raised_budget()));
   const DFP::Statistics c = DFP::make_delaunay(copy, DFP::parameters::strategy(DFP::Strategy::carve));
   DFP_CHECK_MSG(s.regions == 0, describe(s)); // no division was made
   DFP_CHECK_MSG(s.bad_regions == 0 && s.boundary_vertices == 0, describe(s));
@@ -212,8 +221,6 @@ void heavy_damage(std::size_t n, std::uint64_t seed)
 
 int main()
 {
-  // The t-division's budget raised eightfold: its repair is reached on small, damaged inputs.
-  DFP::internal::t_division_budget_factor() = 8;
   const std::size_t n = 20000;
   using DT = DT_with_info<Epick>;
   using T2 = T2_with_info<Epick, int>;

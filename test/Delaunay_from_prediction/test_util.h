@@ -217,16 +217,16 @@ inline const char* name_of(Mode m)
   }
 }
 
-// Calls body(np) with the named parameters of the mode.
+// Calls body(np) with the named parameters of the mode (Mode::t_division with `tuning`).
 template <class F>
-DFP::Statistics with_mode(Mode m, const F& body)
+DFP::Statistics with_mode(Mode m, const F& body, const DFP::Tuning& tuning = DFP::Tuning())
 {
   namespace P = DFP::parameters;
   switch(m) {
   case Mode::defaults: return body(P::default_values());
   case Mode::automatic: return body(P::strategy(DFP::Strategy::automatic));
   case Mode::carve: return body(P::strategy(DFP::Strategy::carve));
-  case Mode::t_division: return body(P::strategy(DFP::Strategy::t_division));
+  case Mode::t_division: return body(P::strategy(DFP::Strategy::t_division).tuning(tuning));
   case Mode::regions: return body(P::strategy(DFP::Strategy::regions));
   case Mode::flips: return body(P::strategy(DFP::Strategy::flips));
   case Mode::spanning_tree: return body(P::strategy(DFP::Strategy::spanning_tree));
@@ -711,9 +711,9 @@ inline Faces random_triples(std::size_t n, std::size_t m, CGAL::Random& rng)
 // or repaired locally (faces carved, holes refilled, or at least one round of the repair).
 // Whether the call fell back for this outcome, compared with the package's own list of
 // reasons: rewording a reason cannot make a test pass or fail vacuously.
-inline bool reason_is(const DFP::Statistics& s, DFP::internal::Outcome outcome)
+inline bool reason_is(const DFP::Statistics& s, DFP::Outcome outcome)
 {
-  return std::string(s.fallback_reason) == DFP::internal::fallback_reason(outcome);
+  return s.outcome == outcome;
 }
 
 inline bool repaired_or_rebuilt(const DFP::Statistics& s)
@@ -920,8 +920,8 @@ void check_statistics(const DFP::Statistics& s, const Faces& faces,
   DFP_CHECK_MSG(s.duplicate_points + dt.number_of_vertices() == n,
                 s.duplicate_points << " duplicates, " << dt.number_of_vertices() << " vertices, "
                                    << n << " points");
-  DFP_CHECK_MSG(std::string(s.fallback_reason).empty() == !s.fell_back,
-                "reason '" << s.fallback_reason << "'");
+  DFP_CHECK_MSG((s.outcome == DFP::Outcome::ok) == !s.fell_back,
+                "reason '" << to_string(s.outcome) << "'");
   if(s.fell_back || built_by_prediction_regions(s, n)) {
     DFP_CHECK_MSG(s.points_reinserted == n, s.points_reinserted << " vs " << n);
     DFP_CHECK(s.faces_certified == 0);

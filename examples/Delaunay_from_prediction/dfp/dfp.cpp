@@ -37,9 +37,11 @@
 #include <cstring>
 #include <exception>
 #include <fstream>
+#include <functional>
 #include <iostream>
 #include <memory>
 #include <new>
+#include <sstream>
 #include <string>
 #include <utility>
 #include <vector>
@@ -76,7 +78,8 @@ const char* const usage_text =
     "In every file, '#' starts a comment and commas count as blanks.\n"
     "\n"
     "options:\n"
-    "  --stats            print what the call did (the package's Statistics) and the times\n"
+    "  --stats            print what the call did (the package's Statistics) and the times,\n"
+    "                     of each stage of the call too (read with a visitor: DFP::Stage)\n"
     "  --check            compare the result with CGAL's Delaunay_triangulation_2 built from\n"
     "                     scratch; exit status 3 if they differ\n"
     "  --threads N        run on N threads (0: all cores; default 1); the result is the same\n"
@@ -264,13 +267,34 @@ bool equals_cgal_build(const std::vector<Point>& points, const DT& dt)
   return geometry_of(dt) == geometry_of(reference);
 }
 
+// A visitor of the package's calls (DFP::parameters::visitor) that times their stages, for --stats.
+struct Stage_times
+{
+  std::vector<std::pair<DFP::Stage, double>> seconds; // each stage as it ended
+  std::chrono::steady_clock::time_point began;
+  void stage_begin(DFP::Stage) { began = std::chrono::steady_clock::now(); }
+  void stage_end(DFP::Stage stage) { seconds.emplace_back(stage, seconds_since(began)); }
+};
+
 void print_statistics(const DFP::Statistics& s, double read_s, double triangulate_s, double write_s,
-                      const DT& dt, std::size_t n)
+                      const Stage_times& stages, const DT& dt, std::size_t n)
 {
   std::cout << "points: " << n << "\nvertices: " << dt.number_of_vertices()
             << "\ntriangles: " << (dt.dimension() == 2 ? dt.number_of_faces() : 0) << "\n"
-            << s << "time_read_s: " << read_s << "\ntime_triangulate_s: " << triangulate_s
-            << "\ntime_write_s: " << write_s << "\n";
+            << s << "time_read_s: " << read_s << "\ntime_triangulate_s: " << triangulate_s << "\n";
+  for(const auto& stage : stages.seconds)
+    std::cout << "time_stage_" << DFP::to_string(stage.first) << "_s: " << stage.second << "\n";
+  std::cout << "time_write_s: " << write_s << "\n";
+}
+
+// The stage times of `stages` on one line: " stages_s check=0.01 certify=0.02 ...".
+std::string stage_list(const Stage_times& stages)
+{
+  std::ostringstream out;
+  out << " stages_s";
+  for(const auto& stage : stages.seconds)
+    out << " " << DFP::to_string(stage.first) << "=" << stage.second;
+  return out.str();
 }
 
 // `pattern` with its "{}" replaced by `frame`; `pattern` itself when it has none.
@@ -284,17 +308,17 @@ std::string frame_file(const std::string& pattern, std::size_t frame)
 
 template <class Tag>
 DFP::Statistics triangulate(const std::vector<Point>& points, const Prediction& prediction, DT& dt,
-                            const Options& o)
+                            const Options& o, Stage_times& stages)
 {
   if(o.cgal) {
     build_with_cgal(points, dt);
     DFP::Statistics s;
     s.points_reinserted = points.size();
     s.fell_back = true;
-    s.fallback_reason = "--cgal: CGAL's own build";
+    s.outcome = DFP::Outcome::rebuild_requested; // --cgal: CGAL's own build
     return s;
   }
-  const auto np = DFP::parameters::strategy(o.strategy);
+  const auto np = DFP::parameters::strategy(o.strategy).visitor(std::ref(stages));
   if(prediction.has_edges)
     return DFP::delaunay_from_predicted_edges<Tag>(points, prediction.edges, dt, np);
   return DFP::delaunay_from_prediction<Tag>(points, prediction.faces, dt, np);
@@ -317,7 +341,8 @@ int run_triangulate(const Options& o)
   progress.say("triangulating " + std::to_string(points.size()) + " points");
   const auto built = std::chrono::steady_clock::now();
   DT dt;
-  const DFP::Statistics s = triangulate<Tag>(points, prediction, dt, o);
+  Stage_times stages;
+  const DFP::Statistics s = triangulate<Tag>(points, prediction, dt, o, stages);
   const double triangulate_s = seconds_since(built);
 
   progress.say("writing " + o.output);
@@ -327,7 +352,7 @@ int run_triangulate(const Options& o)
   progress.say("done");
 
   if(o.stats)
-    print_statistics(s, read_s, triangulate_s, write_s, dt, points.size());
+    print_statistics(s, read_s, triangulate_s, write_s, stages, dt, points.size());
   if(o.check) {
     if(!equals_cgal_build(points, dt)) {
       std::cerr << "dfp: --check: the result differs from CGAL's Delaunay_triangulation_2\n";
@@ -345,7 +370,8 @@ int run_kinetic(const Options& o)
   const std::size_t first_index = IO::read_points(o.inputs[0], points);
   const std::size_t n = points.size();
   DT dt;
-  DFP::Statistics s = triangulate<Tag>(points, read_prediction(o.prediction, n), dt, o);
+  Stage_times stages;
+  DFP::Statistics s = triangulate<Tag>(points, read_prediction(o.prediction, n), dt, o, stages);
   // One vertex per point index, to move them; duplicate points share a vertex and cannot move
   // apart in place: such frames are built again, with the previous faces as the prediction.
   std::vector<DT::Vertex_handle> vertex_of(n);
@@ -372,12 +398,13 @@ int run_kinetic(const Options& o)
       points.swap(next);
       read_s = seconds_since(start);
       const auto repair = std::chrono::steady_clock::now();
+      stages.seconds.clear();
       bool rebuilt = !in_place;
       if(in_place) {
         for(std::size_t i = 0; i < n; ++i)
           vertex_of[i]->set_point(points[i]);
         try {
-          s = DFP::make_delaunay<Tag>(dt, DFP::parameters::strategy(o.strategy));
+          s = DFP::make_delaunay<Tag>(dt, DFP::parameters::strategy(o.strategy).visitor(std::ref(stages)));
         } catch(const DFP::Invalid_prediction&) {
           rebuilt = true; // two points met: the triangulation loses a vertex
         }
@@ -386,7 +413,7 @@ int run_kinetic(const Options& o)
         Prediction previous;
         previous.faces = DFP::internal::faces_of(dt);
         DT next_dt;
-        s = triangulate<Tag>(points, previous, next_dt, o);
+        s = triangulate<Tag>(points, previous, next_dt, o, stages);
         dt.swap(next_dt);
         record_vertices();
       }
@@ -394,11 +421,11 @@ int run_kinetic(const Options& o)
         std::cout << "frame " << frame << ": read_s " << read_s << " repair_s " << seconds_since(repair)
                   << " flips " << s.flips << " faces_certified " << s.faces_certified << "/" << s.faces_in
                   << " points_reinserted " << s.points_reinserted << (rebuilt ? " rebuilt" : "")
-                  << (s.fell_back ? " fell_back" : "") << "\n";
+                  << (s.fell_back ? " fell_back" : "") << stage_list(stages) << "\n";
     } else if(o.stats)
       std::cout << "frame 0: built, faces_certified " << s.faces_certified << "/" << s.faces_in << " flips "
                 << s.flips << " points_reinserted " << s.points_reinserted << (s.fell_back ? " fell_back" : "")
-                << "\n";
+                << stage_list(stages) << "\n";
     if(!o.output.empty() && (o.output.find("{}") != std::string::npos || frame + 1 == o.inputs.size()))
       IO::write_triangulation(frame_file(o.output, frame), points, dt, first_index);
     if(o.check && !equals_cgal_build(points, dt)) {
@@ -420,7 +447,7 @@ int run(const Options& o)
 
 // The first touch of a 4 KiB page costs a page fault, and a triangulation of 10^6 points
 // touches some 87,000 of them: on the virtual machine measured, huge pages (about 7,000 faults)
-// took the D = 0 run from 3.0 s to under 2 s (results/issue25_dfp_cli.txt). glibc (2.35 on) backs its large blocks with transparent huge
+// took the D = 0 run from 3.0 s to under 2 s (results/dfp_cli_end_to_end.txt). glibc (2.35 on) backs its large blocks with transparent huge
 // pages (2 MiB, where the kernel allows them on request: Debian's default) when the tunable
 // glibc.malloc.hugetlb=1 is set, which is read only when a program starts: so dfp starts
 // itself again once with it. DFP_NO_HUGE_PAGES=1 keeps the process as it is.

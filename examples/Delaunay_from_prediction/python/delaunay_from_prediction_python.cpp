@@ -217,7 +217,7 @@ py::dict stats_dict(const DFP::Statistics& s)
   d["faces_visited"] = s.faces_visited;
   d["walk_fallbacks"] = s.walk_fallbacks;
   d["insertion_rounds"] = s.insertion_rounds;
-  d["fallback_reason"] = std::string(s.fallback_reason != nullptr ? s.fallback_reason : "");
+  d["fallback_reason"] = std::string(DFP::to_string(s.outcome));
   return d;
 }
 

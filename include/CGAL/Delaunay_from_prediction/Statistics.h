@@ -31,6 +31,121 @@ public:
 
 /*!
 \ingroup PkgDelaunayFromPredictionRef
+What a call made of its prediction: `Outcome::ok` when the prediction was used (certified,
+repaired or flipped), otherwise why the call built from scratch instead
+(`Statistics::fell_back`). `to_string()` gives the sentence a user reads for each.
+*/
+enum class Outcome {
+  ok, ///< the prediction was used (certified, repaired or flipped): the call did not fall back
+  // Chosen by the caller or the traits.
+  rebuild_requested, ///< the rebuild strategy was chosen
+  spanning_tree_requested, ///< the spanning_tree strategy was chosen
+  inexact_predicates, ///< the traits' predicates are not exact: the faces are decided by exact predicates on double coordinates
+  // The prediction, as the import reads it.
+  too_many_indices, ///< too many points or faces for 32-bit indices
+  no_faces, ///< there are no faces
+  screen_rejected, ///< most sampled faces have sampled points inside their circumcircles
+  too_many_holes, ///< too many holes for a local repair
+  holes_or_not_a_triangulation, ///< the faces leave holes, or do not form a triangulation of their vertices
+  degenerate_face, ///< a face is degenerate (its points are collinear or equal)
+  too_many_degenerate_faces, ///< too many faces are degenerate
+  overlapping_faces, ///< two faces lie on the same side of an edge (overlapping or repeated faces)
+  too_many_overlapping_faces, ///< too many faces lie on the same side of an edge as others
+  boundary_pinched, ///< the boundary of the faces pinches at a vertex (not a single polygon)
+  boundary_not_closed, ///< the boundary of the faces is not closed
+  boundary_with_holes, ///< the boundary of the faces has several components (holes)
+  boundary_not_convex, ///< the boundary of the faces is not a convex polygon wound once
+  // A CGAL triangulation (make_delaunay).
+  dimension_below_2, ///< the triangulation has dimension below 2
+  inverted_face, ///< a face is inverted or flat
+  too_many_inverted_faces, ///< too many faces are inverted or flat for a local repair
+  hull_not_convex, ///< the hull is not a convex polygon wound once, and no flip of hull edges makes it one
+  // The local repair (carve).
+  damage_over_budget, ///< the damage exceeds the budget of the local repair
+  holes_kept_growing, ///< holes kept growing past the budget of the local repair
+  hole_over_budget, ///< a hole is larger than the budget of the local repair
+  outer_boundary_not_ccw, ///< the outer boundary of the kept faces is not counterclockwise
+  carve_not_a_triangulation, ///< the kept faces and the filled holes do not form a triangulation
+  duplicate_points, ///< two vertices are at the same point
+  // The t-division repair.
+  t_division_over_budget, ///< the damage would make the t-division cost more than a rebuild
+  bad_regions_too_large, ///< the bad regions of the t-division are too large for a local repair
+  boundary_vertices_collinear, ///< the boundary vertices of the t-division are collinear
+  every_region_bad, ///< every region of the t-division is bad
+  kept_faces_repeated, ///< two kept faces have the same vertices
+  kept_faces_do_not_fit, ///< the kept faces do not fit the triangulation of the boundary vertices
+  // The build by the prediction's regions.
+  too_few_regions, ///< the prediction is too small to be divided into regions
+  regions_interleave, ///< the prediction's regions interleave too much to be triangulated apart
+  regions_do_not_fit, ///< the triangulations of the prediction's regions do not fit together
+  // Flips.
+  flip_budget_exhausted, ///< the flip budget was exhausted
+  too_many_failing_edges, ///< the edges failing the in-circle test would need more flips than the budget
+  // The spanning-tree engine.
+  graph_too_many_components, ///< the graph has too many components to guide the insertion
+  tree_walks_missing, ///< the walks along the spanning tree kept missing
+  graph_edges_too_long, ///< the graph's edges are far longer than the spacing of the points
+  count_ ///< the number of outcomes (not an outcome)
+};
+
+/*!
+\ingroup PkgDelaunayFromPredictionRef
+returns the sentence that explains `outcome`: empty for `Outcome::ok`, for example `"a face is
+degenerate (its points are collinear or equal)"` for `Outcome::degenerate_face`.
+\param outcome the outcome.
+*/
+inline const char* to_string(Outcome outcome)
+{
+  static constexpr const char* sentences[] = {
+      "",
+      "the rebuild strategy was chosen",
+      "the spanning_tree strategy was chosen",
+      "the traits' predicates are not exact: the faces are decided by exact predicates on double coordinates",
+      "too many points or faces for 32-bit indices",
+      "there are no faces",
+      "most sampled faces have sampled points inside their circumcircles",
+      "too many holes for a local repair",
+      "the faces leave holes, or do not form a triangulation of their vertices",
+      "a face is degenerate (its points are collinear or equal)",
+      "too many faces are degenerate",
+      "two faces lie on the same side of an edge (overlapping or repeated faces)",
+      "too many faces lie on the same side of an edge as others",
+      "the boundary of the faces pinches at a vertex (not a single polygon)",
+      "the boundary of the faces is not closed",
+      "the boundary of the faces has several components (holes)",
+      "the boundary of the faces is not a convex polygon wound once",
+      "the triangulation has dimension below 2",
+      "a face is inverted or flat",
+      "too many faces are inverted or flat for a local repair",
+      "the hull is not a convex polygon wound once, and no flip of hull edges makes it one",
+      "the damage exceeds the budget of the local repair",
+      "holes kept growing past the budget of the local repair",
+      "a hole is larger than the budget of the local repair",
+      "the outer boundary of the kept faces is not counterclockwise",
+      "the kept faces and the filled holes do not form a triangulation",
+      "two vertices are at the same point",
+      "the damage would make the t-division cost more than a rebuild",
+      "the bad regions of the t-division are too large for a local repair",
+      "the boundary vertices of the t-division are collinear",
+      "every region of the t-division is bad",
+      "two kept faces have the same vertices",
+      "the kept faces do not fit the triangulation of the boundary vertices",
+      "the prediction is too small to be divided into regions",
+      "the prediction's regions interleave too much to be triangulated apart",
+      "the triangulations of the prediction's regions do not fit together",
+      "the flip budget was exhausted",
+      "the edges failing the in-circle test would need more flips than the budget",
+      "the graph has too many components to guide the insertion",
+      "the walks along the spanning tree kept missing",
+      "the graph's edges are far longer than the spacing of the points",
+  };
+  static_assert(sizeof(sentences) / sizeof(sentences[0]) == std::size_t(Outcome::count_), "one sentence per outcome");
+  const std::size_t i = std::size_t(outcome);
+  return i < std::size_t(Outcome::count_) ? sentences[i] : "";
+}
+
+/*!
+\ingroup PkgDelaunayFromPredictionRef
 Reports what a call of `delaunay_from_prediction()`, `make_delaunay()`,
 `delaunay_from_predicted_edges()`, `delaunay_from_spanning_graph()`,
 `Imprecise_points_2::triangulate()`, `split_delaunay()` or `brio_dc_delaunay()` did. Every member is
@@ -107,9 +222,9 @@ struct Statistics
   /// number of rounds of the gradation (random samples) that inserted the points (BrioDC: the
   /// number of samples).
   std::size_t insertion_rounds = 0;
-  /// why the prediction was not used as it is: empty when it was a triangulation of the
-  /// points; otherwise a static string such as `"a face is degenerate"`.
-  const char* fallback_reason = "";
+  /// what the call made of the prediction: `Outcome::ok` when it was used, otherwise why the
+  /// call built from scratch (`to_string(outcome)` says it in a sentence).
+  Outcome outcome = Outcome::ok;
 };
 
 /*!
@@ -117,7 +232,7 @@ struct Statistics
 writes `s` to `out`, one `name: value` line per member, named as the members are: always
 `faces_in`, `faces_certified`, `flips`, `points_reinserted` and `fell_back` (`true` or
 `false`), then every other count that is not 0, the flag `input_reordered` when set, and
-`fallback_reason` when the prediction was not used as it is.
+`outcome` (`to_string()`'s sentence) when it is not `Outcome::ok`.
 \param out the stream.
 \param s the statistics.
 \returns `out`.
@@ -140,8 +255,8 @@ inline std::ostream& operator<<(std::ostream& out, const Statistics& s)
       out << c.first << ": " << c.second << "\n";
   if(s.input_reordered)
     out << "input_reordered: true\n";
-  if(s.fallback_reason != nullptr && s.fallback_reason[0] != '\0')
-    out << "fallback_reason: " << s.fallback_reason << "\n";
+  if(s.outcome != Outcome::ok)
+    out << "outcome: " << to_string(s.outcome) << "\n";
   return out;
 }
 

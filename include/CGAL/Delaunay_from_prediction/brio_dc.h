@@ -12,14 +12,14 @@
 
 #include <CGAL/Delaunay_from_prediction/Statistics.h>
 #include <CGAL/Delaunay_from_prediction/parameters.h>
-#include <CGAL/Delaunay_from_prediction/internal/brio_dc_insertion.h>
-#include <CGAL/Delaunay_from_prediction/internal/concurrency.h>
-#include <CGAL/Delaunay_from_prediction/internal/hierarchy.h>
-#include <CGAL/Delaunay_from_prediction/internal/input_check.h>
-#include <CGAL/Delaunay_from_prediction/internal/random.h>
-#include <CGAL/Delaunay_from_prediction/internal/spanning_tree_insertion.h>
-#include <CGAL/Delaunay_from_prediction/internal/spatial_order.h>
-#include <CGAL/Delaunay_from_prediction/internal/vertex_info.h>
+#include <CGAL/Delaunay_from_prediction/internal/build/brio_dc_insertion.h>
+#include <CGAL/Delaunay_from_prediction/internal/toolbox/concurrency.h>
+#include <CGAL/Delaunay_from_prediction/internal/build/hierarchy.h>
+#include <CGAL/Delaunay_from_prediction/internal/check/input_check.h>
+#include <CGAL/Delaunay_from_prediction/internal/toolbox/random.h>
+#include <CGAL/Delaunay_from_prediction/internal/build/spanning_tree_insertion.h>
+#include <CGAL/Delaunay_from_prediction/internal/import/spatial_order.h>
+#include <CGAL/Delaunay_from_prediction/internal/toolbox/vertex_info.h>
 
 #include <CGAL/number_utils.h>
 

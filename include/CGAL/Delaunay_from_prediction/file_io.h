@@ -5,8 +5,8 @@
 #ifndef CGAL_DELAUNAY_FROM_PREDICTION_FILE_IO_H
 #define CGAL_DELAUNAY_FROM_PREDICTION_FILE_IO_H
 
-#include <CGAL/Delaunay_from_prediction/internal/text_file.h>
-#include <CGAL/Delaunay_from_prediction/internal/vertex_info.h>
+#include <CGAL/Delaunay_from_prediction/internal/io/text_file.h>
+#include <CGAL/Delaunay_from_prediction/internal/toolbox/vertex_info.h>
 #include <CGAL/number_utils.h>
 
 #include <algorithm>

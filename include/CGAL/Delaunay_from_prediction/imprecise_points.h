@@ -14,14 +14,14 @@
 
 #include <CGAL/Delaunay_from_prediction/Statistics.h>
 #include <CGAL/Delaunay_from_prediction/parameters.h>
-#include <CGAL/Delaunay_from_prediction/internal/hierarchy.h>
-#include <CGAL/Delaunay_from_prediction/internal/input_check.h>
-#include <CGAL/Delaunay_from_prediction/internal/insertion.h>
-#include <CGAL/Delaunay_from_prediction/internal/random.h>
-#include <CGAL/Delaunay_from_prediction/internal/rebuild.h>
-#include <CGAL/Delaunay_from_prediction/internal/spanning_tree_insertion.h>
-#include <CGAL/Delaunay_from_prediction/internal/spatial_order.h>
-#include <CGAL/Delaunay_from_prediction/internal/vertex_info.h>
+#include <CGAL/Delaunay_from_prediction/internal/build/hierarchy.h>
+#include <CGAL/Delaunay_from_prediction/internal/check/input_check.h>
+#include <CGAL/Delaunay_from_prediction/internal/build/insertion.h>
+#include <CGAL/Delaunay_from_prediction/internal/toolbox/random.h>
+#include <CGAL/Delaunay_from_prediction/internal/build/rebuild.h>
+#include <CGAL/Delaunay_from_prediction/internal/build/spanning_tree_insertion.h>
+#include <CGAL/Delaunay_from_prediction/internal/import/spatial_order.h>
+#include <CGAL/Delaunay_from_prediction/internal/toolbox/vertex_info.h>
 
 #include <CGAL/Delaunay_triangulation_2.h>
 #include <CGAL/Exact_rational.h>
@@ -240,7 +240,7 @@ public:
     if(n == 0)
       return stats;
     if constexpr(internal::decides_by_exact_predicates<Gt>::value) {
-      // Inexact predicates (internal/exact_predicates.h): faces decided by exact predicates
+      // Inexact predicates (internal/toolbox/predicates.h): faces decided by exact predicates
       // (rebuild.h), the walks and flips below relying on consistent predicates.
       internal::build_with_exact_predicates(dt, points, n, stats);
       return stats;
@@ -349,7 +349,7 @@ private:
   // hint only chooses where a walk starts.
   void compute_hints()
   {
-    // Inexact predicates (internal/exact_predicates.h): the centres' triangulation by exact
+    // Inexact predicates (internal/toolbox/predicates.h): the centres' triangulation by exact
     // predicates on the coordinates rounded to double (Gt's could crash the insertion).
     constexpr bool exact = !internal::decides_by_exact_predicates<Gt>::value;
     using Cgt = std::conditional_t<exact, Gt, internal::Deciding_gt>;

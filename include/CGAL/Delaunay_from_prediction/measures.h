@@ -17,7 +17,7 @@
 #define CGAL_DELAUNAY_FROM_PREDICTION_MEASURES_H
 
 #include <CGAL/Delaunay_from_prediction_2.h>
-#include <CGAL/Delaunay_from_prediction/internal/prediction_measures.h>
+#include <CGAL/Delaunay_from_prediction/internal/measures/prediction_measures.h>
 
 #include <CGAL/Delaunay_triangulation_2.h>
 #include <CGAL/Kernel_traits.h>

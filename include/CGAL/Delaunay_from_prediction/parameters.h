@@ -11,7 +11,10 @@
 #ifndef CGAL_DELAUNAY_FROM_PREDICTION_PARAMETERS_H
 #define CGAL_DELAUNAY_FROM_PREDICTION_PARAMETERS_H
 
+#include <CGAL/Delaunay_from_prediction/visitor.h>
 #include <CGAL/Named_function_parameters.h>
+
+#include <cstddef>
 
 namespace CGAL {
 namespace Delaunay_from_prediction {
@@ -24,6 +27,8 @@ enum region_size_t { region_size };
 enum disk_order_t { disk_order };
 enum split_method_t { split_method };
 enum sample_probability_t { sample_probability };
+enum visitor_t { visitor };
+enum tuning_t { tuning };
 } // namespace internal_np
 
 /*!
@@ -117,6 +122,29 @@ enum class Split_method {
   randomized
 };
 
+/*!
+\ingroup PkgDelaunayFromPredictionRef
+Thresholds of `delaunay_from_prediction()` and `make_delaunay()` (named parameter `tuning`),
+for experiments and tests; the defaults are measured. Whatever the values, the result is the
+same triangulation: only the time differs.
+*/
+struct Tuning
+{
+  /// `Strategy::t_division` gives up when its work (in point insertions) would exceed this
+  /// factor times n, about a rebuild: past it the division costs more than the rebuild
+  /// (bench_delaunay_from_prediction's t-division cases, 1e5 and 1e6 points); tests raise it to reach the division on small inputs.
+  double t_division_budget_factor = 1;
+  /// with `CGAL::Parallel_tag`, a build from scratch is made in blocks only from this many
+  /// threads: on one thread the build in blocks costs 14% more than the sequential build
+  /// (bench_region_build, 1e6 points).
+  std::size_t min_threads_for_blocks = 2;
+  /// ... and only in blocks of at least this many points (two or more blocks): smaller blocks
+  /// make the seams' share grow; at 1e6 points on 2 threads 4 blocks gave 1.58x the sequential
+  /// build, 2 blocks 1.23x, 8 blocks 1.51x (bench_region_build). Tests lower it to build in
+  /// blocks at small sizes.
+  std::size_t min_points_per_block = std::size_t(1) << 15;
+};
+
 /// \ingroup PkgDelaunayFromPredictionRef
 /// Named parameters of the package; CGAL's own (`CGAL::parameters::...`) are visible here too.
 namespace parameters {
@@ -161,6 +189,8 @@ struct Named_parameters : CGAL::Named_function_parameters<T, Tag, Base>
   CGAL_DFP_CHAINED_PARAMETER(disk_order)
   CGAL_DFP_CHAINED_PARAMETER(split_method)
   CGAL_DFP_CHAINED_PARAMETER(sample_probability)
+  CGAL_DFP_CHAINED_PARAMETER(visitor)
+  CGAL_DFP_CHAINED_PARAMETER(tuning)
   /// @}
 #undef CGAL_DFP_CHAINED_PARAMETER
 };
@@ -228,7 +258,8 @@ strategy(const T& v, const CGAL::Named_function_parameters<A, B, C>& np)
 
 /// sets the number of faces t of a region of `Strategy::t_division` (default: n/32 for n
 /// points, at least 64 and at most 4096; the paper's proof takes log2(n)^2, which was measured
-/// twice as slow at 1e6 points, see the user manual).
+/// twice as slow at 1e6 points, see the user manual) and of `Strategy::regions` (default: two
+/// regions per thread and at least four, that is 2n / (2 max(2, threads)) faces, at least 64).
 /// \param v the region size (a `std::size_t`).
 /// \returns the named parameter `region_size` with value `v`.
 template <class T>
@@ -305,6 +336,48 @@ sample_probability(const T& v, const CGAL::Named_function_parameters<A, B, C>& n
 {
   return Named_parameters<T, internal_np::sample_probability_t,
                                          CGAL::Named_function_parameters<A, B, C>>(v, np);
+}
+
+/// sets the visitor told of each stage of `delaunay_from_prediction()` and `make_delaunay()`
+/// as it begins and ends, see `Default_visitor` (the default, which does nothing) and `Stage`.
+/// The chain holds a copy: pass `std::ref(v)` to have `v` itself called.
+/// \param v a visitor (a class with `stage_begin(Stage)` and `stage_end(Stage)`), or a
+///        `std::reference_wrapper` of one.
+/// \returns the named parameter `visitor` with value `v`.
+template <class T>
+Named_parameters<T, internal_np::visitor_t> visitor(const T& v)
+{
+  return Named_parameters<T, internal_np::visitor_t>(v);
+}
+/// same, chained in front of other named parameters.
+/// \param v the value of the parameter.
+/// \param np the named parameters to chain after it.
+/// \returns the chain `v`, then `np`.
+template <class T, class A, class B, class C>
+Named_parameters<T, internal_np::visitor_t, CGAL::Named_function_parameters<A, B, C>>
+visitor(const T& v, const CGAL::Named_function_parameters<A, B, C>& np)
+{
+  return Named_parameters<T, internal_np::visitor_t, CGAL::Named_function_parameters<A, B, C>>(v, np);
+}
+
+/// sets the thresholds of `delaunay_from_prediction()` and `make_delaunay()`, see `Tuning`:
+/// for experiments and tests; the defaults are measured.
+/// \param v a `Tuning`.
+/// \returns the named parameter `tuning` with value `v`.
+template <class T>
+Named_parameters<T, internal_np::tuning_t> tuning(const T& v)
+{
+  return Named_parameters<T, internal_np::tuning_t>(v);
+}
+/// same, chained in front of other named parameters.
+/// \param v the value of the parameter.
+/// \param np the named parameters to chain after it.
+/// \returns the chain `v`, then `np`.
+template <class T, class A, class B, class C>
+Named_parameters<T, internal_np::tuning_t, CGAL::Named_function_parameters<A, B, C>>
+tuning(const T& v, const CGAL::Named_function_parameters<A, B, C>& np)
+{
+  return Named_parameters<T, internal_np::tuning_t, CGAL::Named_function_parameters<A, B, C>>(v, np);
 }
 } // namespace parameters
 } // namespace Delaunay_from_prediction

@@ -17,11 +17,11 @@
 #define CGAL_DELAUNAY_FROM_PREDICTION_PREDICTION_MODELS_H
 
 #include <CGAL/Delaunay_from_prediction/measures.h>
-#include <CGAL/Delaunay_from_prediction/internal/flips.h>
-#include <CGAL/Delaunay_from_prediction/internal/prediction_generators.h>
-#include <CGAL/Delaunay_from_prediction/internal/random.h>
-#include <CGAL/Delaunay_from_prediction/internal/rebuild.h>
-#include <CGAL/Delaunay_from_prediction/internal/spatial_order.h>
+#include <CGAL/Delaunay_from_prediction/internal/repair/flips.h>
+#include <CGAL/Delaunay_from_prediction/internal/measures/prediction_generators.h>
+#include <CGAL/Delaunay_from_prediction/internal/toolbox/random.h>
+#include <CGAL/Delaunay_from_prediction/internal/build/rebuild.h>
+#include <CGAL/Delaunay_from_prediction/internal/import/spatial_order.h>
 
 #include <CGAL/Kernel_traits.h>
 

@@ -14,8 +14,8 @@
 
 #include <CGAL/Delaunay_from_prediction_2.h>
 #include <CGAL/Delaunay_from_prediction/spanning_graph.h>
-#include <CGAL/Delaunay_from_prediction/internal/proximity_graph_extraction.h>
-#include <CGAL/Delaunay_from_prediction/internal/union_find.h>
+#include <CGAL/Delaunay_from_prediction/internal/measures/proximity_graph_extraction.h>
+#include <CGAL/Delaunay_from_prediction/internal/toolbox/union_find.h>
 
 #include <CGAL/Delaunay_triangulation_2.h>
 #include <CGAL/FPU.h>

@@ -4,17 +4,17 @@
 //
 // Entry point: the Delaunay triangulation of points from a predicted graph on them (a
 // spanning tree, a neighbour graph, the edges of a triangulation, crossing or not), by the
-// spanning-tree insertion of Section 3 of the paper (internal/spanning_tree_insertion.h).
+// spanning-tree insertion of Section 3 of the paper (internal/build/spanning_tree_insertion.h).
 
 #ifndef CGAL_DELAUNAY_FROM_PREDICTION_SPANNING_GRAPH_H
 #define CGAL_DELAUNAY_FROM_PREDICTION_SPANNING_GRAPH_H
 
 #include <CGAL/Delaunay_from_prediction/Statistics.h>
 #include <CGAL/Delaunay_from_prediction/parameters.h>
-#include <CGAL/Delaunay_from_prediction/internal/concurrency.h>
-#include <CGAL/Delaunay_from_prediction/internal/hierarchy.h>
-#include <CGAL/Delaunay_from_prediction/internal/input_check.h>
-#include <CGAL/Delaunay_from_prediction/internal/spanning_tree_insertion.h>
+#include <CGAL/Delaunay_from_prediction/internal/toolbox/concurrency.h>
+#include <CGAL/Delaunay_from_prediction/internal/build/hierarchy.h>
+#include <CGAL/Delaunay_from_prediction/internal/check/input_check.h>
+#include <CGAL/Delaunay_from_prediction/internal/build/spanning_tree_insertion.h>
 
 #include <cstddef>
 #include <cstdint>

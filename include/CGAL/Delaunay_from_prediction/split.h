@@ -12,14 +12,14 @@
 
 #include <CGAL/Delaunay_from_prediction/Statistics.h>
 #include <CGAL/Delaunay_from_prediction/parameters.h>
-#include <CGAL/Delaunay_from_prediction/internal/hierarchy.h>
-#include <CGAL/Delaunay_from_prediction/internal/outcome.h>
-#include <CGAL/Delaunay_from_prediction/internal/random.h>
-#include <CGAL/Delaunay_from_prediction/internal/randomized_split.h>
-#include <CGAL/Delaunay_from_prediction/internal/rebuild.h>
-#include <CGAL/Delaunay_from_prediction/internal/spanning_tree_insertion.h>
-#include <CGAL/Delaunay_from_prediction/internal/spatial_order.h>
-#include <CGAL/Delaunay_from_prediction/internal/vertex_info.h>
+#include <CGAL/Delaunay_from_prediction/internal/build/hierarchy.h>
+#include <CGAL/Delaunay_from_prediction/internal/check/input_check.h>
+#include <CGAL/Delaunay_from_prediction/internal/toolbox/random.h>
+#include <CGAL/Delaunay_from_prediction/internal/build/randomized_split.h>
+#include <CGAL/Delaunay_from_prediction/internal/build/rebuild.h>
+#include <CGAL/Delaunay_from_prediction/internal/build/spanning_tree_insertion.h>
+#include <CGAL/Delaunay_from_prediction/internal/import/spatial_order.h>
+#include <CGAL/Delaunay_from_prediction/internal/toolbox/vertex_info.h>
 
 #include <CGAL/Delaunay_triangulation_2.h>
 #include <CGAL/Triangulation_data_structure_2.h>
@@ -85,7 +85,8 @@ the paper's bound is not proven for it), which measured slower (see the user man
 \returns what the call did: `points_reinserted` (every vertex of `dt`); with
          `Split_method::randomized` also `points_located`, `faces_visited` and `walk_fallbacks`
          of the reinsertion walks.
-\throws Invalid_prediction if `dt1` or `dt2` is `dt`, or `dt1` is `dt2`. Then nothing is
+\throws Invalid_prediction if `dt1` or `dt2` is `dt`, if `dt1` is `dt2`, or if a vertex of `dt`
+        has a non-finite coordinate (named by its rank in finite-vertex order). Then nothing is
         changed. An exception thrown by `is_in_first` leaves `dt1` and `dt2` unchanged too.
 
 With traits whose predicates are not exact (e.g. `Simple_cartesian<double>`), each part is
@@ -115,6 +116,7 @@ Statistics split_delaunay(const DT& dt, IsInFirst is_in_first, DT1& dt1, DT2& dt
      static_cast<const void*>(&dt1) == static_cast<const void*>(&dt2))
     throw Invalid_prediction("Delaunay_from_prediction: split_delaunay needs dt1 and dt2 to be two triangulations "
                              "other than dt");
+  internal::check_vertices_are_finite(dt);
   const Split_method method = choose_parameter(get_parameter(np, internal_np::split_method), Split_method::automatic);
   const std::uint64_t seed = choose_parameter(get_parameter(np, CGAL::internal_np::random_seed), 0x5eed5117u);
   using Vertex_handle = typename DT::Vertex_handle;
@@ -138,7 +140,7 @@ Statistics split_delaunay(const DT& dt, IsInFirst is_in_first, DT1& dt1, DT2& dt
   dt1.clear();
   dt2.clear();
   if constexpr(internal::decides_by_exact_predicates<typename DT::Geom_traits>::value) {
-    // Inexact predicates (internal/exact_predicates.h): each part decided by exact predicates.
+    // Inexact predicates (internal/toolbox/predicates.h): each part decided by exact predicates.
     (void)method;
     (void)seed;
     auto insert_part = [&](auto& target, int which) {
@@ -155,7 +157,7 @@ Statistics split_delaunay(const DT& dt, IsInFirst is_in_first, DT1& dt1, DT2& dt
     insert_part(dt1, 0);
     insert_part(dt2, 1);
     stats.fell_back = true;
-    stats.fallback_reason = internal::fallback_reason(internal::Outcome::inexact_predicates);
+    stats.outcome = Outcome::inexact_predicates;
     return stats;
   }
   std::vector<typename DT1::Vertex_handle> in_first(method == Split_method::randomized ? n : 0);

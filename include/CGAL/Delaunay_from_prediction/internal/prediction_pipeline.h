@@ -11,23 +11,23 @@
 
 #include <CGAL/Delaunay_from_prediction/Statistics.h>
 #include <CGAL/Delaunay_from_prediction/parameters.h>
-#include <CGAL/Delaunay_from_prediction/internal/carve_repair.h>
-#include <CGAL/Delaunay_from_prediction/internal/flips.h>
-#include <CGAL/Delaunay_from_prediction/internal/import_prediction.h>
-#include <CGAL/Delaunay_from_prediction/internal/input_check.h>
-#include <CGAL/Delaunay_from_prediction/internal/outcome.h>
-#include <CGAL/Delaunay_from_prediction/internal/prediction_screens.h>
-#include <CGAL/Delaunay_from_prediction/internal/rebuild.h>
-#include <CGAL/Delaunay_from_prediction/internal/prediction_region_build.h>
-#include <CGAL/Delaunay_from_prediction/internal/region_parallel_build.h>
-#include <CGAL/Delaunay_from_prediction/internal/region_repair.h>
-#include <CGAL/Delaunay_from_prediction/internal/sort_addresses.h>
-#include <CGAL/Delaunay_from_prediction/internal/spanning_tree_insertion.h>
-#include <CGAL/Delaunay_from_prediction/internal/vertex_info.h>
+#include <CGAL/Delaunay_from_prediction/internal/repair/carve_repair.h>
+#include <CGAL/Delaunay_from_prediction/internal/repair/flips.h>
+#include <CGAL/Delaunay_from_prediction/internal/import/import_prediction.h>
+#include <CGAL/Delaunay_from_prediction/internal/check/input_check.h>
+#include <CGAL/Delaunay_from_prediction/internal/check/prediction_screens.h>
+#include <CGAL/Delaunay_from_prediction/internal/build/rebuild.h>
+#include <CGAL/Delaunay_from_prediction/internal/build/prediction_regions_build.h>
+#include <CGAL/Delaunay_from_prediction/internal/build/block_parallel_build.h>
+#include <CGAL/Delaunay_from_prediction/internal/repair/t_division_repair.h>
+#include <CGAL/Delaunay_from_prediction/internal/repair/sort_addresses.h>
+#include <CGAL/Delaunay_from_prediction/internal/build/spanning_tree_insertion.h>
+#include <CGAL/Delaunay_from_prediction/internal/toolbox/vertex_info.h>
 
 #include <algorithm>
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <utility>
 #include <vector>
@@ -36,11 +36,76 @@ namespace CGAL {
 namespace Delaunay_from_prediction {
 namespace internal {
 
+// The visitor given as a named parameter (visitor.h): the copy the chain holds, or the object
+// of a std::reference_wrapper.
+template <class Visitor>
+Visitor& unwrap_visitor(Visitor& visitor)
+{
+  return visitor;
+}
+template <class Visitor>
+Visitor& unwrap_visitor(std::reference_wrapper<Visitor> visitor)
+{
+  return visitor.get();
+}
+
+// The screens that reject the prediction `triples` before its import (Stage::screen):
+// Outcome::ok when none does. Faces missing, told by counting (see missing_faces_exceed()):
+// past n/8 the local repair (`carve`) would not pay; without it, past n/64 the faces cannot
+// be a triangulation (any excess shows that, the margin keeps the count off the common case
+// of about 2n faces).
+template <class Gt, class PointIterator>
+Outcome screen_outcome(const Gt& gt, PointIterator point_at, std::size_t n, const std::vector<std::uint32_t>& triples,
+                       bool screen, bool default_flip_budget, std::size_t max_failing, bool carve)
+{
+  if(screen && fails_sampling_screen(gt, point_at, n, triples))
+    return Outcome::screen_rejected;
+  if(screen && default_flip_budget && failing_edges_exceed(point_at, n, triples, max_failing))
+    return Outcome::too_many_failing_edges;
+  if(missing_faces_exceed(gt, point_at, n, triples, carve ? n / 8 + 16 : n / 64 + 16))
+    return carve ? Outcome::too_many_holes : Outcome::holes_or_not_a_triangulation;
+  return Outcome::ok;
+}
+
+// make_delaunay() with Strategy::regions on `tr` (dimension 2): its faces are the prediction;
+// the triangulation is built aside by regions (prediction_regions_build.h), then put on the same
+// vertices. When the regions do not fit, `build_aside(aside, points, n)` (a build by blocks, or
+// false), then the insertion, build it from scratch: a fallback. Throws as
+// rebuild_keeping_vertices(), leaving `tr` as it is. `visitor` is told of Stage::regions, then
+// of Stage::rebuild if the regions did not fit.
+template <class Triangulation, class BuildAside, class Visitor>
+void rebuild_by_prediction_regions(Triangulation& tr, std::size_t region_size, Statistics& stats, bool parallel,
+                                   const BuildAside& build_aside, Visitor& visitor)
+{
+  std::vector<std::uint32_t> triples;
+  visitor.stage_begin(Stage::regions);
+  internal::finite_faces_as_index_triples(tr, triples);
+  Outcome why = Outcome::ok;
+  internal::rebuild_keeping_vertices(tr, stats, [&](auto& aside, auto points, std::size_t n) {
+    Statistics built;
+    why = internal::build_by_prediction_regions(aside, points, n, triples, region_size, built, parallel);
+    stats.regions = built.regions;
+    stats.boundary_vertices = built.boundary_vertices;
+    std::vector<std::uint32_t>().swap(triples);
+    if(why == Outcome::ok)
+      return true;
+    visitor.stage_end(Stage::regions);
+    visitor.stage_begin(Stage::rebuild);
+    return build_aside(aside, points, n);
+  });
+  visitor.stage_end(why == Outcome::ok ? Stage::regions : Stage::rebuild);
+  if(why != Outcome::ok) {
+    stats.fell_back = true;
+    stats.outcome = why;
+  }
+}
+
 // delaunay_from_prediction() for traits with exact predicates, on the points point_at[0..n)
-// (checked finite by the caller) and the faces: import and certify the index triples (a
-// malformed face throws before `dt` changes), repair locally (carve, t-division), flip, insert
-// the unused points; a build from scratch when a stage gives up (with `parallel`, by regions:
-// region_parallel_build.h). `stats` comes with faces_in set.
+// and the faces: check the points and the index triples (a non-finite point or a malformed face
+// throws before `dt` changes), import and certify them, repair locally (carve, t-division),
+// flip, insert the unused points; a build from scratch when a stage gives up (with `parallel`,
+// by regions: block_parallel_build.h, as `tuning` says). `stats` comes with faces_in set.
+// `visitor` is told of each stage as it begins and ends (visitor.h), on this thread.
 // The failing edges past which Lawson's flips would exceed `max_flips`: each failing edge
 // needs a flip, and the cascades they start more. Measured on the rho model's predictions with
 // both completions and on random flips of DT(P) (bench_d_cross, 1e5 points), Lawson made 1.35
@@ -51,12 +116,12 @@ inline std::size_t max_failing_edges(std::size_t max_flips)
   return max_flips == std::size_t(-1) ? max_flips : std::size_t(double(max_flips) / 1.35);
 }
 
-template <class PointIterator, class FaceRange, class DT>
+template <class PointIterator, class FaceRange, class DT, class Visitor>
 Statistics delaunay_from_index_triples(PointIterator point_at, std::size_t n, const FaceRange& faces,
                                        std::size_t number_of_faces, DT& dt, std::size_t max_flips,
                                        bool default_flip_budget, bool screen,
                                        Strategy strategy, std::size_t region_size, Statistics stats,
-                                       bool parallel = false)
+                                       bool parallel, const Tuning& tuning, Visitor& visitor)
 {
   using Vertex_handle = typename DT::Vertex_handle;
   using Face_handle = typename DT::Face_handle;
@@ -70,13 +135,14 @@ Statistics delaunay_from_index_triples(PointIterator point_at, std::size_t n, co
   const auto& gt = dt.geom_traits();
   DT result(gt);
   internal::Imported_prediction<DT> imported;
-  // Stage 1: every face validated once, into 32-bit triples (a malformed face throws here).
+  // Stage 1: the points checked finite, every face validated once, into 32-bit triples (a
+  // malformed face throws here).
+  visitor.stage_begin(Stage::check);
+  internal::check_points_are_finite(point_at, n);
   std::vector<std::uint32_t> triples;
   const bool fits = internal::read_index_triples(faces, n, number_of_faces, triples, parallel);
-  // Stage 2: the screens, then the import. Faces missing, told by counting (see
-  // missing_faces_exceed()): past n/8 the local repair would not pay; without it, past n/64
-  // the faces cannot be a triangulation (any excess shows that, the margin keeps the count off
-  // the common case of about 2n faces).
+  visitor.stage_end(Stage::check);
+  // Stage 2: the screens, then the import.
   if(strategy == Strategy::rebuild || strategy == Strategy::spanning_tree)
     imported.failure = strategy == Strategy::rebuild ? Outcome::rebuild_requested : Outcome::spanning_tree_requested;
   else if(!fits)
@@ -84,28 +150,30 @@ Statistics delaunay_from_index_triples(PointIterator point_at, std::size_t n, co
   else if(number_of_faces == 0)
     imported.failure = Outcome::no_faces;
   else if(strategy == Strategy::regions) {
-    // Theorem 5.4 in practical form (prediction_region_build.h): a build, not a repair.
+    // Theorem 5.4 in practical form (prediction_regions_build.h): a build, not a repair.
+    visitor.stage_begin(Stage::regions);
     imported.failure = internal::build_by_prediction_regions(result, point_at, n, triples, region_size, stats, parallel);
+    visitor.stage_end(Stage::regions);
     if(imported.failure == Outcome::ok) {
       dt.swap(result);
       return stats;
     }
-  } else if(screen && internal::fails_sampling_screen(gt, point_at, n, triples))
-    imported.failure = Outcome::screen_rejected;
-  else if(screen && default_flip_budget && internal::failing_edges_exceed(point_at, n, triples, max_failing))
-    imported.failure = Outcome::too_many_failing_edges;
-  else if(internal::missing_faces_exceed(gt, point_at, n, triples, carve ? n / 8 + 16 : n / 64 + 16))
-    imported.failure = carve ? Outcome::too_many_holes : Outcome::holes_or_not_a_triangulation;
-  else
-    internal::Prediction_importer<DT>::run(result, point_at, n, triples, imported, carve, parallel, nullptr,
-                                           default_flip_budget ? max_failing : std::size_t(-1));
+  } else {
+    visitor.stage_begin(Stage::screen);
+    imported.failure = screen_outcome(gt, point_at, n, triples, screen, default_flip_budget, max_failing, carve);
+    visitor.stage_end(Stage::screen);
+    if(imported.failure == Outcome::ok)
+      internal::Prediction_importer<DT>::run(result, point_at, n, triples, imported, carve, parallel, visitor,
+                                             default_flip_budget ? max_failing : std::size_t(-1));
+  }
 
   // The global fallback, a build from scratch: in spatial order, or, with
   // Strategy::spanning_tree, along a spanning tree of the faces' edges (Corollaries 3.4 and
   // 3.5). Measured at 1e6 points on predictions that fall back (points moved by 0.3 to 1
   // spacing, 1% of the points relabelled, random triples; bench_fallback.cpp), the spatial
   // order was as fast to 26% faster: the default.
-  auto build_from_scratch = [&](internal::Outcome why) {
+  auto build_from_scratch = [&](Outcome why) {
+    visitor.stage_begin(Stage::rebuild);
     stats.fell_back = true;
     stats.faces_certified = 0;
     stats.points_reinserted = 0;
@@ -118,8 +186,8 @@ Statistics delaunay_from_index_triples(PointIterator point_at, std::size_t n, co
     DT fresh(gt);
     if(strategy != Strategy::spanning_tree || !fits || n >= std::size_t(internal::no_rank)) {
       std::vector<std::uint32_t>().swap(triples); // not needed: keep the peak memory down
-      const std::size_t blocks = parallel ? internal::default_region_blocks(n, internal::available_threads()) : 1;
-      if(blocks < 2 || !internal::build_by_regions(fresh, point_at, n, stats, blocks))
+      const std::size_t blocks = parallel ? internal::default_block_count(n, internal::available_threads(), tuning) : 1;
+      if(blocks < 2 || !internal::build_in_blocks(fresh, point_at, n, stats, blocks))
         internal::build_from_scratch(fresh, point_at, n, stats, grid_order);
     } else {
       // Two edges of each face keep its three corners connected (`triples` is still as read:
@@ -131,8 +199,9 @@ Statistics delaunay_from_index_triples(PointIterator point_at, std::size_t n, co
       std::vector<std::uint32_t>().swap(triples);
       internal::build_along_edges(fresh, point_at, n, ends, stats);
     }
-    stats.fallback_reason = internal::fallback_reason(why);
+    stats.outcome = why;
     dt.swap(fresh);
+    visitor.stage_end(Stage::rebuild);
     return stats;
   };
   stats.input_reordered = imported.reordered;
@@ -165,6 +234,7 @@ Statistics delaunay_from_index_triples(PointIterator point_at, std::size_t n, co
   if(imported.needs_repair) {
     // The faces kept are not a triangulation with a convex hull: fill the holes and close
     // the hull (carve_repair.h); vertices left without a face are reinserted.
+    visitor.stage_begin(Stage::carve);
     repair.reset(new internal::Carve_repair<DT>(result, false));
     repair->expect_outer_cycle();
     // Faces that overlap without sharing an edge on one side (none left out) still meet at a
@@ -176,11 +246,15 @@ Statistics delaunay_from_index_triples(PointIterator point_at, std::size_t n, co
       repair->add_open_halfedge(e.first, e.second);
     const Outcome why = repair->plan(internal::default_carve_limits(n));
     stats.carve_rounds = (std::max)(stats.carve_rounds, repair->rounds());
-    if(why != Outcome::ok)
+    if(why != Outcome::ok) {
+      visitor.stage_end(Stage::carve);
       return build_from_scratch(why);
+    }
     repair->commit(stack);
-    if(!repair->finish_hull(stack, stats.flips))
+    if(!repair->finish_hull(stack, stats.flips)) {
+      visitor.stage_end(Stage::carve);
       return build_from_scratch(Outcome::carve_not_a_triangulation);
+    }
     std::size_t duplicates = 0;
     repair->reinsert(stack, modified, [&](Vertex_handle v, Vertex_handle same) {
       internal::merge_index_info_of(same, v);
@@ -196,12 +270,15 @@ Statistics delaunay_from_index_triples(PointIterator point_at, std::size_t n, co
     stats.holes_refilled += repair->holes();
     stats.points_reinserted = repair->detached().size();
     stats.duplicate_points += duplicates;
+    visitor.stage_end(Stage::carve);
   }
-  std::unique_ptr<internal::Region_repair<DT>> regions;
+  std::unique_ptr<internal::T_division_repair<DT>> regions;
   if(strategy == Strategy::t_division) {
+    visitor.stage_begin(Stage::t_division);
     std::size_t duplicates = 0;
-    const Outcome why = internal::repair_by_regions(
-        result, regions, std::vector<Face_handle>(), true, stack, !repair, region_size, modified, stats, false,
+    const Outcome why = internal::repair_by_t_division(
+        result, regions, std::vector<Face_handle>(), true, stack, !repair, region_size,
+        tuning.t_division_budget_factor, modified, stats, false,
         [&](Vertex_handle v, Vertex_handle same) {
           internal::merge_index_info_of(same, v);
           result.tds().delete_vertex(v);
@@ -213,6 +290,7 @@ Statistics delaunay_from_index_triples(PointIterator point_at, std::size_t n, co
     if(why != Outcome::ok)
       regions.reset();
     stats.duplicate_points += duplicates;
+    visitor.stage_end(Stage::t_division);
   }
   auto made_by_repair = [&](const void* f) {
     return (repair && repair->is_created(f)) || (regions && regions->is_created(f)) || filled_by_import(f);
@@ -220,7 +298,10 @@ Statistics delaunay_from_index_triples(PointIterator point_at, std::size_t n, co
   std::vector<Face_handle> touched;
   // Points reinserted by the t-division make a few flips each, on top of the budget.
   const std::size_t flip_budget = max_flips + (regions ? 4 * regions->detached().size() : 0);
-  if(!internal::lawson_flip(result, stack, flip_budget, stats.flips, touched, parallel))
+  visitor.stage_begin(Stage::flips);
+  const bool flipped = internal::lawson_flip(result, stack, flip_budget, stats.flips, touched, parallel);
+  visitor.stage_end(Stage::flips);
+  if(!flipped)
     return build_from_scratch(Outcome::flip_budget_exhausted);
 
   // Points no face uses: duplicates of vertices, or points to insert.
@@ -248,8 +329,11 @@ Statistics delaunay_from_index_triples(PointIterator point_at, std::size_t n, co
       modified.push_back(&*f);
     internal::sort_unique_addresses(modified);
     std::vector<const void*> new_vertices;
-    if(!unused.empty())
+    if(!unused.empty()) {
+      visitor.stage_begin(Stage::insert);
       internal::insert_points(result, point_at, unused, stats, &new_vertices);
+      visitor.stage_end(Stage::insert);
+    }
     std::sort(new_vertices.begin(), new_vertices.end());
     auto is_new = [&](const Vertex_handle v) {
       return std::binary_search(new_vertices.begin(), new_vertices.end(), static_cast<const void*>(&*v));

@@ -1,0 +1,947 @@
+// Copyright (c) 2026 Delaunay_from_prediction contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Author(s): Delaunay_from_prediction founding team
+//
+// Stage 3 of the pipeline for a prediction given as index triples (read and validated into
+// 32-bit triples by input_check.h): import, certify and export to CGAL's triangulation data
+// structure, fused into one streaming pass.
+//
+// At 1e6 points the cost is memory traffic, not arithmetic (see PERFORMANCE_NOTES), so:
+//  - if the points or the faces come in no spatial order (sampled), the points are renumbered
+//    along a serpentine grid and the faces counting-sorted by their smallest new index, so
+//    that everything later touches a narrow band of memory (spatial_order.h);
+//  - one pass over the faces then orients each face, creates its CGAL vertices and face, and
+//    pairs its half-edges with their twins through a small hash table holding the open
+//    "frontier" edges; when a twin is found the two faces are linked and the edge gets its
+//    in-circle test while both faces are in cache.
+// Linear expected time; the hash table stays as small as the frontier (about sqrt(n) edges
+// for spatially ordered faces).
+
+#ifndef CGAL_DELAUNAY_FROM_PREDICTION_INTERNAL_IMPORT_IMPORT_PREDICTION_H
+#define CGAL_DELAUNAY_FROM_PREDICTION_INTERNAL_IMPORT_IMPORT_PREDICTION_H
+
+#include <CGAL/Delaunay_from_prediction/internal/toolbox/concurrency.h>
+#include <CGAL/Delaunay_from_prediction/internal/toolbox/hash_map.h>
+#include <CGAL/Delaunay_from_prediction/internal/import/hole_tracing.h>
+#include <CGAL/Delaunay_from_prediction/Statistics.h>
+#include <CGAL/Delaunay_from_prediction/internal/toolbox/predicates.h>
+#include <CGAL/Delaunay_from_prediction/internal/import/spatial_order.h>
+#include <CGAL/Delaunay_from_prediction/internal/toolbox/vertex_info.h>
+#include <CGAL/Delaunay_from_prediction/visitor.h>
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <limits>
+#include <memory>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Delaunay_from_prediction {
+namespace internal {
+
+// What Prediction_importer leaves behind besides the triangulation itself.
+template <class Triangulation>
+struct Imported_prediction
+{
+  using Face_handle = typename Triangulation::Face_handle;
+
+  std::vector<std::size_t> unused_points;                         // used by no face
+  std::vector<std::pair<Face_handle, int>> not_locally_delaunay; // one side of each such edge
+  // Tolerant import (local repair): faces left out (degenerate, or on the same side of an
+  // edge as an earlier face), and, when the faces kept are not a triangulation with a convex
+  // hull, their half-edges without a twin (the TDS then has no infinite faces yet).
+  std::size_t faces_dropped = 0;
+  bool needs_repair = false;
+  std::vector<std::pair<Face_handle, int>> open_halfedges;
+  // Tolerant import: holes it filled itself (fill_small_holes()), and the faces it made for
+  // them (addresses, sorted): those are not predicted faces.
+  std::size_t holes_filled = 0;
+  std::vector<const void*> filled_faces;
+  std::size_t vertices_used = 0;
+  std::size_t edges_tested = 0;
+  bool reordered = false;        // whether the spatial reordering ran
+  // The caller's point indices in the grid order of the reordering, when it renumbered the
+  // points (else empty): a rebuild after the import starts from it.
+  std::vector<std::uint32_t> points_in_grid_order;
+  Outcome failure = Outcome::ok; // why the faces are not a triangulation
+};
+
+// Half-edges waiting for their twin, filed under the edge's smaller endpoint u in a ring of
+// per-vertex lists indexed by u modulo a power of two. Faces arrive in band order (sorted by
+// smallest index, spatial_order.h), so the endpoints with waiting half-edges lie in a window
+// narrower than the ring and a lookup is a scan of a few entries in cache. A list that is full,
+// or whose ring slot is claimed by a later vertex, spills into a hash map; one bit per
+// vertex says whether it has spilled, so that the table is only searched for those (hull
+// half-edges wait forever and would otherwise keep it busy).
+class Open_halfedges
+{
+public:
+  // With `banded`, the faces come in band order (sorted by smallest index): a window of
+  // 16 sqrt(n) lists, about eight rows of the reordering grid. Otherwise small inputs get one
+  // list per vertex, and larger ones the window.
+  explicit Open_halfedges(std::size_t n, bool banded = false)
+  {
+    const std::size_t window = (std::min)(n, std::size_t(16 * std::sqrt(double(n))) + 1024);
+    const std::size_t wanted = !banded && n <= (std::size_t(1) << 16) ? n : window;
+    std::size_t size = 64;
+    while(size < wanted)
+      size <<= 1;
+    lists_.assign(size, List{none, 0, {}, {}});
+    mask_ = size - 1;
+    spilled_.assign(n / 64 + 1, 0);
+  }
+
+  // If the twin of the half-edge with endpoints u < x is open, closes it and returns true with
+  // its code; otherwise opens this half-edge with `code` and returns false.
+  bool take_or_open(std::uint32_t u, std::uint32_t x, std::uintptr_t code, std::uintptr_t& twin)
+  {
+    List& list = lists_[u & mask_];
+    if(list.owner != u) {
+      for(std::uint32_t k = 0; k < list.count; ++k)
+        spill(list.owner, list.other[k], list.code[k]);
+      list.owner = u;
+      list.count = 0;
+    }
+    for(std::uint32_t k = 0; k < list.count; ++k)
+      if(list.other[k] == x) {
+        twin = list.code[k];
+        --list.count;
+        list.other[k] = list.other[list.count];
+        list.code[k] = list.code[list.count];
+        --open_;
+        return true;
+      }
+    if(((spilled_[u >> 6] >> (u & 63)) & 1) != 0 &&
+       spill_.take(edge_key(u, x), twin)) {
+      --open_;
+      return true;
+    }
+    ++open_;
+    if(list.count < capacity) {
+      list.other[list.count] = x;
+      list.code[list.count] = code;
+      ++list.count;
+    } else {
+      spill(u, x, code);
+    }
+    return false;
+  }
+
+  std::size_t size() const { return open_; }
+
+  template <class Visit> // visit(smaller, larger, code)
+  void for_each(Visit visit) const
+  {
+    for(const List& list : lists_)
+      for(std::uint32_t k = 0; k < list.count; ++k)
+        visit(list.owner, list.other[k], list.code[k]);
+    spill_.for_each([&](std::uint64_t edge, std::uintptr_t code) {
+      visit(std::uint32_t(edge >> 32), std::uint32_t(edge), code);
+    });
+  }
+
+private:
+  static constexpr std::uint32_t none = (std::numeric_limits<std::uint32_t>::max)();
+  static constexpr std::uint32_t capacity = 6;
+  struct List
+  {
+    std::uint32_t owner, count;
+    std::uint32_t other[capacity];
+    std::uintptr_t code[capacity];
+  };
+  static std::uint64_t edge_key(std::uint32_t smaller, std::uint32_t larger)
+  {
+    return std::uint64_t(smaller) << 32 | larger;
+  }
+  void spill(std::uint32_t u, std::uint32_t x, std::uintptr_t code)
+  {
+    spill_.insert(edge_key(u, x), code);
+    spilled_[u >> 6] |= std::uint64_t(1) << (u & 63);
+  }
+
+  std::vector<List> lists_;
+  std::size_t mask_ = 0, open_ = 0;
+  // Overflow: keyed by the undirected edge (smaller index, larger index).
+  Hash_map<std::uint64_t, std::uintptr_t> spill_{1u << 8};
+  std::vector<std::uint64_t> spilled_; // one bit per vertex: has it spilled?
+};
+
+template <class Triangulation>
+class Prediction_importer
+{
+  using Vertex_handle = typename Triangulation::Vertex_handle;
+  using Face_handle = typename Triangulation::Face_handle;
+  using Face = typename Triangulation::Face;
+  using Point = typename Triangulation::Point;
+  // An open half-edge is stored as its face's address (faces hold pointers: 8-byte aligned)
+  // with the half-edge's index (the vertex it faces) in bits 0-1 and, in bit 2, whether its
+  // tail is the edge's smaller endpoint.
+  static constexpr std::uintptr_t tail_is_smaller_bit = 4, index_bits = 3, flag_bits = 7;
+  // An open half-edge by its endpoints, with its code.
+  struct Boundary_halfedge
+  {
+    std::uint32_t tail, head;
+    std::uintptr_t code;
+    bool operator<(const Boundary_halfedge& other) const { return tail < other.tail; }
+  };
+
+  static std::uintptr_t halfedge_code(Face_handle f, int i, bool tail_is_smaller)
+  {
+    return reinterpret_cast<std::uintptr_t>(&*f) | std::uintptr_t(i) | (tail_is_smaller ? tail_is_smaller_bit : 0);
+  }
+
+  enum class Pairing { opened, twin_found, same_side };
+  // Offers half-edge i of f, from `tail` to `head`, to `open`: either it opens, or the
+  // half-edge waiting on the same edge is taken (`twin`), on the other side of the edge or,
+  // for faces that overlap, on the same side.
+  static Pairing offer_halfedge(Open_halfedges& open, Face_handle f, int i, std::uint32_t tail, std::uint32_t head,
+                                std::uintptr_t& twin)
+  {
+    const bool tail_is_smaller = tail < head;
+    const std::uintptr_t code = halfedge_code(f, i, tail_is_smaller);
+    if(!open.take_or_open(tail_is_smaller ? tail : head, tail_is_smaller ? head : tail, code, twin))
+      return Pairing::opened;
+    return ((twin ^ code) & tail_is_smaller_bit) == 0 ? Pairing::same_side : Pairing::twin_found;
+  }
+
+  // Links half-edge i of f to its twin, half-edge j of g, and records the edge in `failing`
+  // (as (f, i)) unless it is locally Delaunay: `opposite` is f's vertex i, `tail` and `head`
+  // the edge's ends.
+  static void link_and_test(const typename Triangulation::Geom_traits& gt, Face_handle f, int i, Face_handle g, int j,
+                            const Point& opposite, const Point& tail, const Point& head, std::size_t& edges_tested,
+                            std::vector<std::pair<Face_handle, int>>& failing)
+  {
+    f->set_neighbor(i, g);
+    g->set_neighbor(j, f);
+    ++edges_tested;
+    if(!is_locally_delaunay(gt, opposite, tail, head, g->vertex(j)->point()))
+      failing.emplace_back(f, i);
+  }
+
+public:
+  // Imports and certifies the prediction `triples` (validated 32-bit index triples of
+  // points[0..n), input_check.h; reordered here) into `tr`, fresh from its constructor.
+  //
+  // Why the checks certify a triangulation. Orient every face counterclockwise (a flat face
+  // fails). Pair each half-edge with one of opposite direction on the same edge if there is
+  // one (two faces on the same side of an edge fail). For a point x on no edge let deg(x) be
+  // the number of faces containing x. Summing the winding numbers of the face boundaries,
+  // paired half-edges cancel, so deg(x) is the winding number around x of the chain of
+  // unpaired half-edges. If that chain is a single convex polygon wound once counterclockwise,
+  // deg is 1 inside it and 0 outside: the faces tile the polygon with disjoint interiors. Then
+  // no edge has more than two faces, no vertex lies inside another face's edge and no two
+  // vertices coincide (the faces at such a place would cover part of the plane twice), and
+  // each vertex's link winds exactly once: the faces form a triangulation of their vertices
+  // whose domain is convex, hence their convex hull. If every point is a vertex or equal to
+  // one, it triangulates P; if moreover every interior edge is locally Delaunay under CGAL's
+  // perturbed in-circle test, it is CGAL's DT(P) (Delaunay's lemma, applied to the
+  // symbolically perturbed points, whose Delaunay triangulation is unique).
+  //
+  // With `tolerant`, a face that is degenerate or lies on the same side of an edge as an
+  // earlier face is left out instead of failing the import, and a boundary that is not one
+  // convex polygon is handed over (needs_repair, open_halfedges) for carve_repair.h.
+  //
+  // With `parallel`, the faces are oriented, paired and tested in chunks on TBB's threads
+  // (build_in_chunks()); the certificate is the same.
+  //
+  // `visitor` is told of the two stages (visitor.h): Stage::order, the spatial reordering with
+  // the copy of the points, and Stage::import, the import and certificate.
+  template <class PointIterator, class Visitor = Default_visitor>
+  static void run(Triangulation& tr, PointIterator points, std::size_t n, std::vector<std::uint32_t>& triples,
+                  Imported_prediction<Triangulation>& out, bool tolerant, bool parallel = false,
+                  Visitor&& visitor = Visitor(), std::size_t max_failing = std::size_t(-1))
+  {
+    Prediction_importer importer(tr, n, triples.size() / 3, out, tolerant);
+    importer.max_failing_ = max_failing; // failing edges past which the import stops (extrapolated)
+    visitor.stage_begin(Stage::order);
+    Spatial_order order;
+    order.compute(tr.geom_traits(), points, n, triples, parallel);
+    out.reordered = order.renumbered() || order.faces_sorted();
+    auto import = [&](auto sorted_points) {
+      visitor.stage_begin(Stage::import);
+      if(!parallel || importer.number_of_faces_ < 2 * min_chunk || !importer.build_in_chunks(sorted_points, triples, order))
+        importer.build(sorted_points, triples, order);
+      visitor.stage_end(Stage::import);
+    };
+    if(order.renumbered()) {
+      // Default-initialized, not zero-filled: every entry is written below.
+      const std::unique_ptr<Point[]> sorted_points(new Point[n]);
+      for_each_range(parallel, n, 65536, [&](std::size_t first, std::size_t last) {
+        for(std::size_t v = first; v < last; ++v)
+          sorted_points[v] = points[order.old_index(std::uint32_t(v))];
+      });
+      visitor.stage_end(Stage::order);
+      import(static_cast<const Point*>(sorted_points.get()));
+      out.points_in_grid_order = order.take_old_indices();
+    } else {
+      visitor.stage_end(Stage::order);
+      import(points);
+    }
+  }
+
+private:
+  Prediction_importer(Triangulation& tr, std::size_t n, std::size_t number_of_faces,
+                      Imported_prediction<Triangulation>& out, bool tolerant)
+      : tr_(tr), n_(n), number_of_faces_(number_of_faces), out_(out), tolerant_(tolerant)
+  {}
+
+  // The streaming pass, then the hull.
+  template <class PointIterator>
+  void build(PointIterator points, const std::vector<std::uint32_t>& triples,
+             const Spatial_order& order)
+  {
+    auto& tds = tr_.tds();
+    const auto& gt = tr_.geom_traits();
+    auto orientation = gt.orientation_2_object();
+    tds.faces().clear(); // the constructor's face of dimension -1
+    tds.set_dimension(2);
+    tds.vertices().reserve(n_ + 1);
+    tds.faces().reserve(number_of_faces_ + 64);
+    std::vector<Vertex_handle> vertex_of(n_);
+    Open_halfedges open(n_);
+
+    const std::uint32_t* t = triples.data();
+    bool f_dropped = false;
+    // Tolerant import: the half-edges still open are the moving frontier when the faces come
+    // sorted (spatial_order.h), plus the boundaries of holes; past n/4 of those the local
+    // repair would cost more than a rebuild (see delaunay_from_prediction), so the import
+    // stops as soon as it sees that many (with 32 sqrt(n) for the frontier), or, from a 32nd
+    // of the faces on, as soon as the hole boundaries seen so far, extrapolated to all the
+    // faces, exceed 1.25 times that. Measured at 1e6 points with 1% of the faces deleted, the
+    // open half-edges grow linearly from a frontier of about sqrt(n) (8 sqrt(n) is
+    // subtracted); with 10% deleted the import stops after about 5% of the faces, where the
+    // fixed limit alone lets it run through half of them.
+    const std::size_t root = std::size_t(std::sqrt(double(n_)));
+    const std::size_t max_open = n_ / 4 + 64 + 32 * root;
+    for(std::size_t k = 0; k < number_of_faces_; ++k, t += 3) {
+      if(tolerant_ && order.faces_sorted() && (k & 4095) == 0 &&
+         (open.size() > max_open ||
+          (32 * k >= number_of_faces_ && open.size() > 8 * root &&
+           double(open.size() - 8 * root) * double(number_of_faces_) > 1.25 * double(max_open) * double(k)))) {
+        out_.failure = Outcome::too_many_holes;
+        return;
+      }
+      // The same extrapolation, from an eighth of the faces on, for the edges failing the
+      // in-circle test against `max_failing` (the caller's flip budget over the flips a
+      // failing edge costs): a prediction that would exhaust the flips is rebuilt after an
+      // eighth of the import instead of after all of it and the flips (bench_d_cross: the rho
+      // model's predictions cost 1.2 to 1.4 times the rebuild that way at 1e5 points).
+      if((k & 4095) == 0 && 8 * k >= number_of_faces_ &&
+         double(out_.not_locally_delaunay.size()) * double(number_of_faces_) > double(max_failing_) * double(k)) {
+        out_.failure = Outcome::too_many_failing_edges;
+        return;
+      }
+      // The same extrapolation for the faces left out: with 1% of the points of 1e6
+      // relabelled (faces crossing others) it stops after a 32nd of the faces, where the
+      // fixed limit alone is passed near the end, 0.2 s in (the call 1.46 times CGAL's build).
+      if(tolerant_ && (k & 4095) == 0 && 32 * k >= number_of_faces_ &&
+         double(out_.faces_dropped) * double(number_of_faces_) > 1.25 * double(max_dropped()) * double(k)) {
+        out_.failure = Outcome::too_many_overlapping_faces;
+        return;
+      }
+      std::uint32_t v[3] = {t[0], t[1], t[2]};
+      const Point& p0 = points[v[0]];
+      Orientation o = orientation(p0, points[v[1]], points[v[2]]);
+      if(o == COLLINEAR) {
+        if(tolerant_ && ++out_.faces_dropped <= max_dropped())
+          continue;
+        if(tolerant_) {
+          out_.failure = Outcome::too_many_degenerate_faces;
+          return;
+        }
+        out_.failure = Outcome::degenerate_face;
+        return;
+      }
+      if(o == NEGATIVE)
+        std::swap(v[1], v[2]);
+      Vertex_handle w[3];
+      bool created[3];
+      for(int i = 0; i < 3; ++i) {
+        Vertex_handle& slot = vertex_of[v[i]];
+        created[i] = (slot == Vertex_handle());
+        if(created[i]) {
+          slot = tds.create_vertex();
+          slot->set_point(points[v[i]]);
+          set_index_info(slot, order.old_index(v[i]));
+          ++out_.vertices_used;
+        }
+        w[i] = slot;
+      }
+      const Face_handle f = tds.create_face(w[0], w[1], w[2]);
+      for(int i = 0; i < 3; ++i)
+        if(created[i])
+          w[i]->set_face(f);
+
+      // Half-edge i runs from v[ccw(i)] to v[cw(i)]; the face is on its left.
+      const std::size_t tests_before = out_.not_locally_delaunay.size();
+      for(int i = 0; i < 3; ++i) {
+        const std::uint32_t tail = v[ccw(i)], head = v[cw(i)];
+        std::uintptr_t twin = 0;
+        const Pairing pairing = offer_halfedge(open, f, i, tail, head, twin);
+        if(pairing == Pairing::opened)
+          continue;
+        if(pairing == Pairing::same_side) {
+          if(!tolerant_) {
+            out_.failure = Outcome::overlapping_faces;
+            return;
+          }
+          // Leave this face out: reopen the twin just taken, undo the half-edges done.
+          std::uintptr_t ignored = 0;
+          open.take_or_open((std::min)(tail, head), (std::max)(tail, head), twin, ignored);
+          drop_face(f, v, i, created, w, open, tests_before);
+          f_dropped = true;
+          if(out_.faces_dropped > max_dropped()) {
+            out_.failure = Outcome::too_many_overlapping_faces;
+            return;
+          }
+          break;
+        }
+        link_and_test(gt, f, i, tds.faces().iterator_to(*reinterpret_cast<Face*>(twin & ~flag_bits)),
+                      int(twin & index_bits), points[v[i]], points[tail], points[head], out_.edges_tested,
+                      out_.not_locally_delaunay);
+      }
+      if(f_dropped) {
+        f_dropped = false;
+        for(int i = 0; i < 3; ++i)
+          if(created[i])
+            vertex_of[v[i]] = Vertex_handle();
+      }
+    }
+
+    std::vector<Boundary_halfedge> boundary;
+    boundary.reserve(open.size());
+    open.for_each([&](std::uint32_t smaller, std::uint32_t larger, std::uintptr_t code) {
+      boundary.push_back(boundary_halfedge(smaller, larger, code));
+    });
+    finish(points, vertex_of, order, boundary);
+  }
+
+  static Boundary_halfedge boundary_halfedge(std::uint32_t smaller, std::uint32_t larger, std::uintptr_t code)
+  {
+    return (code & tail_is_smaller_bit) ? Boundary_halfedge{smaller, larger, code}
+                                        : Boundary_halfedge{larger, smaller, code};
+  }
+
+  // After the faces are imported and paired: the points no face uses, then the half-edges
+  // still open (`boundary`: the hull's and the boundaries of holes), the small holes filled
+  // (tolerant import) and the hull closed, or the boundary handed over for carve_repair.h.
+  template <class PointIterator>
+  void finish(PointIterator points, const std::vector<Vertex_handle>& vertex_of, const Spatial_order& order,
+              std::vector<Boundary_halfedge>& boundary)
+  {
+    auto& tds = tr_.tds();
+    for(std::uint32_t v = 0; v < n_; ++v)
+      if(vertex_of[v] == Vertex_handle())
+        out_.unused_points.push_back(order.old_index(v));
+    std::sort(out_.unused_points.begin(), out_.unused_points.end());
+    std::sort(boundary.begin(), boundary.end());
+    if(tolerant_ && out_.faces_dropped == 0)
+      fill_small_holes(points, boundary);
+    const std::size_t kept = number_of_faces_ - out_.faces_dropped + out_.filled_faces.size();
+    const long long hull_size = 2 * (long long)(out_.vertices_used) - 2 - (long long)(kept);
+    Outcome why = Outcome::ok;
+    if(hull_size < 3 || boundary.size() != std::size_t(hull_size))
+      why = Outcome::holes_or_not_a_triangulation;
+    else
+      why = close_hull(points, boundary);
+    if(why == Outcome::ok)
+      return;
+    if(!tolerant_) {
+      out_.failure = why;
+      return;
+    }
+    out_.needs_repair = true;
+    out_.open_halfedges.reserve(boundary.size());
+    for(const Boundary_halfedge& h : boundary)
+      out_.open_halfedges.emplace_back(tds.faces().iterator_to(*reinterpret_cast<Face*>(h.code & ~flag_bits)),
+                                       int(h.code & index_bits));
+  }
+
+  // Faces per chunk of build_in_chunks(), at least: small, so that even small inputs (and the
+  // tests) cross several chunk boundaries.
+  static constexpr std::size_t min_chunk = 32;
+
+  // build() in parallel, on chunks of consecutive faces (a 16th of them, at least
+  // min_chunk, so at most 16 chunks). Three passes over the chunks on TBB's threads:
+  //  1. each chunk marks the vertices it uses in a bitmap of its own;
+  //  2. each chunk creates, in index order, the vertices it uses and no earlier chunk does,
+  //     in a Compact_container of its own (CGAL's containers are not thread-safe);
+  //  3. each chunk orients its faces and creates them in a container of its own, pairs their
+  //     half-edges through its own Open_halfedges, links and tests the pairs; it writes only
+  //     its own faces and vertices.
+  // Then the half-edges each chunk left open (its frontiers with the chunks before and after,
+  // about sqrt(n) each for faces in band order, and the hull) are paired sequentially in chunk
+  // order, and the containers spliced, in chunk order, into the triangulation's
+  // (Compact_container::merge(), constant time per block), so that faces come in the order
+  // build() creates them (vertices in chunk order, by index within a chunk); the seams are
+  // linked and tested last. The pairing is exact, so the faces, their links and the failing
+  // edges are those of build(); only the order of the failing edges differs.
+  //
+  // A face the tolerant import would leave out (flat, or on the same side of an edge as
+  // another) stops every chunk and false is returned, the triangulation untouched: build()
+  // then runs from the start, since which face it leaves out depends on the order of the
+  // faces. Strict imports fail there as build() does.
+  template <class PointIterator>
+  bool build_in_chunks(PointIterator points, const std::vector<std::uint32_t>& triples, const Spatial_order& order)
+  {
+    using Vertex_range = typename Triangulation::Triangulation_data_structure::Vertex_range;
+    using Face_range = typename Triangulation::Triangulation_data_structure::Face_range;
+    auto& tds = tr_.tds();
+    const auto& gt = tr_.geom_traits();
+    const std::size_t faces = number_of_faces_;
+    const std::size_t chunk_size = (std::max)(min_chunk, (faces + 15) / 16);
+    const std::size_t chunks = (faces + chunk_size - 1) / chunk_size;
+    auto for_each_chunk = [&](const auto& body) {
+      for_each_block(true, chunks, [&](std::size_t c) {
+        body(c, c * chunk_size, (std::min)(faces, (c + 1) * chunk_size));
+      });
+    };
+
+    // 1. The vertices each chunk uses.
+    const std::size_t words = (n_ + 63) / 64;
+    std::vector<std::uint64_t> uses(chunks * words, 0);
+    for_each_chunk([&](std::size_t c, std::size_t first, std::size_t last) {
+      std::uint64_t* mine = uses.data() + c * words;
+      for(const std::uint32_t *t = triples.data() + 3 * first, *end = triples.data() + 3 * last; t != end; ++t)
+        mine[*t >> 6] |= std::uint64_t(1) << (*t & 63);
+    });
+
+    // 2. The vertices, each made by the first chunk that uses it (`owner`).
+    std::vector<Vertex_handle> vertex_of(n_);
+    std::vector<Vertex_range> vertices(chunks);
+    std::vector<std::uint8_t> owner(n_); // chunks <= 16
+    for_each_chunk([&](std::size_t c, std::size_t, std::size_t) {
+      for(std::size_t w = 0; w < words; ++w) {
+        std::uint64_t own = uses[c * words + w];
+        for(std::size_t earlier = 0; own != 0 && earlier < c; ++earlier)
+          own &= ~uses[earlier * words + w];
+        for(std::size_t bit = 0; own != 0; ++bit, own >>= 1) {
+          if((own & 1) == 0)
+            continue;
+          const std::size_t v = 64 * w + bit;
+          const Vertex_handle h = vertices[c].emplace();
+          h->set_point(points[v]);
+          set_index_info(h, order.old_index(std::uint32_t(v)));
+          vertex_of[v] = h;
+          owner[v] = std::uint8_t(c);
+        }
+      }
+    });
+    std::vector<std::uint64_t>().swap(uses);
+
+    // 3. The faces, their pairs and tests.
+    constexpr int go_on = -1, face_left_out = -2; // why the chunks stop: not, or an Outcome
+    std::atomic<int> stop{go_on};
+    struct Chunk
+    {
+      std::vector<std::pair<Face_handle, int>> not_locally_delaunay;
+      std::vector<Boundary_halfedge> open; // tail = smaller endpoint, head = larger
+      std::size_t edges_tested = 0;
+    };
+    std::vector<Chunk> chunk(chunks);
+    std::vector<Face_range> face_range(chunks);
+    const std::size_t root = std::size_t(std::sqrt(double(n_)));
+    const std::size_t max_open = n_ / 4 + 64 + 32 * root;
+    for_each_chunk([&](std::size_t c, std::size_t first, std::size_t last) {
+      Chunk& out = chunk[c];
+      Face_range& created = face_range[c];
+      created.reserve(last - first);
+      Open_halfedges open(n_, true);
+      auto orientation = gt.orientation_2_object();
+      for(std::size_t k = first; k < last; ++k) {
+        const std::size_t done = k - first;
+        if((done & 1023) == 0 && stop.load(std::memory_order_relaxed) != go_on)
+          return;
+        // The tolerant import's stop for too many holes (see build()), on this chunk's share
+        // of the faces; a chunk has two frontiers.
+        if(tolerant_ && order.faces_sorted() && (done & 4095) == 0 &&
+           (open.size() > (n_ / 4 + 64) * (last - first) / faces + 64 * root ||
+            (32 * done >= last - first && open.size() > 16 * root &&
+             double(open.size() - 16 * root) * double(faces) > 1.25 * double(max_open) * double(done)))) {
+          stop.store(int(Outcome::too_many_holes));
+          return;
+        }
+        // The stop for too many failing edges (see build()), on this chunk's share.
+        if((done & 4095) == 0 && 8 * done >= last - first &&
+           double(out.not_locally_delaunay.size()) * double(faces) > double(max_failing_) * double(done)) {
+          stop.store(int(Outcome::too_many_failing_edges));
+          return;
+        }
+        const std::uint32_t* t = triples.data() + 3 * k;
+        std::uint32_t v[3] = {t[0], t[1], t[2]};
+        const Orientation o = orientation(points[v[0]], points[v[1]], points[v[2]]);
+        if(o == COLLINEAR) {
+          stop.store(tolerant_ ? face_left_out : int(Outcome::degenerate_face));
+          return;
+        }
+        if(o == NEGATIVE)
+          std::swap(v[1], v[2]);
+        const Face_handle f = created.emplace(vertex_of[v[0]], vertex_of[v[1]], vertex_of[v[2]]);
+        // A vertex's first face in the chunk that made it becomes its face().
+        for(int i = 0; i < 3; ++i)
+          if(owner[v[i]] == c && vertex_of[v[i]]->face() == Face_handle())
+            vertex_of[v[i]]->set_face(f);
+        for(int i = 0; i < 3; ++i) {
+          const std::uint32_t tail = v[ccw(i)], head = v[cw(i)];
+          std::uintptr_t twin = 0;
+          const Pairing pairing = offer_halfedge(open, f, i, tail, head, twin);
+          if(pairing == Pairing::opened)
+            continue;
+          if(pairing == Pairing::same_side) {
+            stop.store(tolerant_ ? face_left_out : int(Outcome::overlapping_faces));
+            return;
+          }
+          link_and_test(gt, f, i, created.iterator_to(*reinterpret_cast<Face*>(twin & ~flag_bits)),
+                        int(twin & index_bits), points[v[i]], points[tail], points[head], out.edges_tested,
+                        out.not_locally_delaunay);
+        }
+      }
+      out.open.reserve(open.size());
+      open.for_each([&](std::uint32_t smaller, std::uint32_t larger, std::uintptr_t code) {
+        out.open.push_back(Boundary_halfedge{smaller, larger, code});
+      });
+    });
+    int why = stop.load();
+    if(why == face_left_out)
+      return false; // the chunks' containers are released: build() starts again
+    if(why != go_on) {
+      out_.failure = Outcome(why);
+      return true;
+    }
+
+    // The seams paired in chunk order before anything is spliced, so that a pair on the same
+    // side leaves the triangulation as it was (the chunks' containers are released on return).
+    std::size_t seams = 0;
+    for(const Chunk& c : chunk)
+      seams += c.open.size();
+    Hash_map<std::uint64_t, std::uintptr_t> waiting(2 * seams + 2);
+    std::vector<std::pair<std::uintptr_t, std::uintptr_t>> seam_pairs; // (half-edge, twin) codes
+    seam_pairs.reserve(seams / 2);
+    std::vector<std::size_t> pairs_end(chunks); // chunk c's pairs end there
+    for(std::size_t c = 0; c < chunks; ++c) {
+      for(const Boundary_halfedge& h : chunk[c].open) {
+        const std::uint64_t edge = std::uint64_t(h.tail) << 32 | h.head;
+        std::uintptr_t twin = 0;
+        if(!waiting.take(edge, twin)) {
+          waiting.insert(edge, h.code);
+          continue;
+        }
+        if(((twin ^ h.code) & tail_is_smaller_bit) == 0) {
+          if(tolerant_)
+            return false; // build() starts again
+          out_.failure = Outcome::overlapping_faces;
+          return true;
+        }
+        seam_pairs.emplace_back(h.code, twin);
+      }
+      pairs_end[c] = seam_pairs.size();
+    }
+
+    // The containers spliced, then the seams linked and tested, in the same order.
+    tds.faces().clear(); // the constructor's face of dimension -1
+    tds.set_dimension(2);
+    for(std::size_t c = 0; c < chunks; ++c) {
+      out_.vertices_used += vertices[c].size();
+      tds.vertices().merge(vertices[c]);
+      tds.faces().merge(face_range[c]);
+    }
+    auto face_of = [&](std::uintptr_t code) {
+      return tds.faces().iterator_to(*reinterpret_cast<Face*>(code & ~flag_bits));
+    };
+    for(std::size_t c = 0, k = 0; c < chunks; ++c) {
+      out_.edges_tested += chunk[c].edges_tested;
+      out_.not_locally_delaunay.insert(out_.not_locally_delaunay.end(), chunk[c].not_locally_delaunay.begin(),
+                                       chunk[c].not_locally_delaunay.end());
+      for(; k < pairs_end[c]; ++k) {
+        const Face_handle f = face_of(seam_pairs[k].first);
+        const int i = int(seam_pairs[k].first & index_bits);
+        link_and_test(gt, f, i, face_of(seam_pairs[k].second), int(seam_pairs[k].second & index_bits),
+                      f->vertex(i)->point(), f->vertex(ccw(i))->point(), f->vertex(cw(i))->point(),
+                      out_.edges_tested, out_.not_locally_delaunay);
+      }
+    }
+    std::vector<Boundary_halfedge> boundary;
+    boundary.reserve(waiting.size());
+    waiting.for_each([&](std::uint64_t edge, std::uintptr_t code) {
+      boundary.push_back(boundary_halfedge(std::uint32_t(edge >> 32), std::uint32_t(edge), code));
+    });
+    finish(points, vertex_of, order, boundary);
+    return true;
+  }
+
+  // Leaves face f (vertices v, vertex handles w, `created` those it created) out of the
+  // import after its half-edge `conflict` met a twin on the same side: its half-edges before
+  // `conflict` are unlinked (their twins reopened) or closed, the in-circle results on them
+  // dropped, and the face and the vertices it created deleted.
+  void drop_face(Face_handle f, const std::uint32_t v[3], int conflict, const bool created[3],
+                 const Vertex_handle w[3], Open_halfedges& open, std::size_t tests_before)
+  {
+    auto& tds = tr_.tds();
+    for(int i = 0; i < conflict; ++i) {
+      const std::uint32_t tail = v[ccw(i)], head = v[cw(i)];
+      const std::uint32_t smaller = (std::min)(tail, head), larger = (std::max)(tail, head);
+      std::uintptr_t twin = 0;
+      const Face_handle g = f->neighbor(i);
+      if(g == Face_handle()) {
+        open.take_or_open(smaller, larger, 0, twin); // closes f's own open half-edge
+        continue;
+      }
+      const int j = g->index(f);
+      g->set_neighbor(j, Face_handle());
+      --out_.edges_tested;
+      // g's half-edge j runs from head to tail.
+      const std::uintptr_t code = halfedge_code(g, j, head < tail);
+      open.take_or_open(smaller, larger, code, twin);
+    }
+    out_.not_locally_delaunay.resize(tests_before);
+    for(int i = 0; i < 3; ++i)
+      if(created[i]) {
+        tds.delete_vertex(w[i]);
+        --out_.vertices_used;
+      }
+    tds.delete_face(f);
+    ++out_.faces_dropped;
+  }
+
+  // Tolerant import, when no face was left out: fills the small holes here instead of handing
+  // them to carve_repair.h, whose store of open half-edges (hash tables of half-edges and
+  // vertices, incremental rounds) is built for carving. Measured with 1% of the faces of a DT of 1e6
+  // points deleted (19,549 holes, nearly all single triangles): 0.026 s here against 0.045 s
+  // for the tracing, filling and commit there, and the whole call 5-6% faster (in-process
+  // A/B; the lookups of the kept faces around the holes are most of what is left).
+  // The tracing is the carve's (hole_tracing.h), on a sorted array of index pairs: the open
+  // half-edges are traced into cycles of at most max_fill edges, split at repeated vertices
+  // into loops; a loop is filled when ear clipping triangulates it, reversed, as a
+  // counterclockwise polygon (so the hull's
+  // cycle, clockwise once reversed, and islands are never taken), and when it shares no vertex
+  // with a loop left open. The ears are paired like imported faces, with their in-circle
+  // tests; everything else is left open for carve_repair.h. Nothing here needs the holes to
+  // be what they seem: the ears are counterclockwise and paired, so the certificate stays the
+  // one of run() (every face counterclockwise, every half-edge paired but those of one convex
+  // cycle wound once).
+  template <class PointIterator>
+  void fill_small_holes(PointIterator points, std::vector<Boundary_halfedge>& halfedges)
+  {
+    constexpr std::size_t max_fill = 32;
+    // Turning around a vertex through more linked faces than this (a vertex's degree is
+    // about 6) means faces winding around it: left to carve_repair.h.
+    constexpr std::size_t longest_turn = 64;
+    const std::size_t m = halfedges.size();
+    const std::size_t no_successor = m;
+    auto& tds = tr_.tds();
+    const auto& gt = tr_.geom_traits();
+    auto face_of = [&](std::uintptr_t code) {
+      return tds.faces().iterator_to(*reinterpret_cast<Face*>(code & ~flag_bits));
+    };
+    // The open half-edge after halfedges[k]: the only one leaving its head, or, when several
+    // do (holes that touch there), the one that ends the fan of linked faces turning around
+    // the head from halfedges[k]'s face, as next_open() of carve_repair.h does (the cycle then
+    // passes through the head twice and is split below).
+    auto successor = [&](std::size_t k) {
+      const std::uint32_t head = halfedges[k].head;
+      const auto first = std::lower_bound(halfedges.begin(), halfedges.end(), Boundary_halfedge{head, 0, 0});
+      if(first == halfedges.end() || first->tail != head)
+        return no_successor;
+      if(first + 1 == halfedges.end() || (first + 1)->tail != head)
+        return std::size_t(first - halfedges.begin());
+      Face_handle f = face_of(halfedges[k].code);
+      const Vertex_handle v = f->vertex(cw(int(halfedges[k].code & index_bits)));
+      int leaving = ccw(int(halfedges[k].code & index_bits)); // f's half-edge that leaves v
+      if(!turn_to_open_halfedge(f, v, leaving, [](Face_handle g, int i) { return g->neighbor(i) == Face_handle(); },
+                                longest_turn))
+        return no_successor; // faces winding around v: not a hole to fill here
+      for(auto it = first; it != halfedges.end() && it->tail == head; ++it)
+        if((it->code & ~flag_bits) == reinterpret_cast<std::uintptr_t>(&*f) && int(it->code & index_bits) == leaving)
+          return std::size_t(it - halfedges.begin());
+      return no_successor;
+    };
+    // Links half-edge i of f (from `tail` to `head`) to half-edge j of g, with the in-circle test.
+    auto link = [&](Face_handle f, int i, std::uint32_t tail, std::uint32_t head, Face_handle g, int j) {
+      link_and_test(gt, f, i, g, j, f->vertex(i)->point(), points[tail], points[head], out_.edges_tested,
+                    out_.not_locally_delaunay);
+    };
+    struct Diagonal
+    {
+      std::size_t from, to;
+      Face_handle face;
+      int index;
+    };
+    // Pass 1: trace, split, and clip every loop; the vertices of what stays open are marked.
+    // Half-edge loop[q] runs from t_q to t_(q+1); reversed, the polygon has vertex
+    // p = t_(m-1-p), and its edge from p to p+1 is the twin of loop[m-2-p] (indices mod m).
+    std::vector<char> done(m, 0);
+    std::vector<std::size_t> cycle, loop, polygon;
+    Hole_clipper clipper;
+    std::vector<Hole_ear> ears;
+    std::vector<std::size_t> loop_halfedges, loop_start(1, 0), loop_ears_start(1, 0);
+    std::vector<Hole_ear> loop_ears;
+    std::vector<std::uint32_t> left_open; // vertices of the cycles and loops not filled
+    auto plan_loop = [&](std::vector<std::size_t>::const_iterator first, std::vector<std::size_t>::const_iterator last) {
+      const std::size_t size = std::size_t(last - first);
+      if(size < 3 ||
+         !clipper.clip(gt, size, [&](std::size_t q) -> decltype(auto) { return points[halfedges[first[std::ptrdiff_t(q)]].tail]; },
+                       ears)) {
+        for(auto h = first; h != last; ++h)
+          left_open.push_back(halfedges[*h].tail);
+        return;
+      }
+      loop_halfedges.insert(loop_halfedges.end(), first, last);
+      loop_start.push_back(loop_halfedges.size());
+      loop_ears.insert(loop_ears.end(), ears.begin(), ears.end());
+      loop_ears_start.push_back(loop_ears.size());
+    };
+    for(std::size_t start = 0; start < m; ++start) {
+      if(done[start])
+        continue;
+      cycle.clear();
+      bool closed = false;
+      for(std::size_t at = start; !done[at] && cycle.size() < max_fill;) {
+        done[at] = 1;
+        cycle.push_back(at);
+        at = successor(at);
+        if(at == no_successor)
+          break;
+        if(at == start) {
+          closed = true;
+          break;
+        }
+      }
+      if(!closed) {
+        for(const std::size_t h : cycle)
+          left_open.push_back(halfedges[h].tail);
+        continue;
+      }
+      // A cycle through a vertex twice (holes that touch there, the successor having turned
+      // through the faces between them) is split there into loops, each through distinct
+      // vertices.
+      split_at_repeated_vertices(cycle, [&](std::size_t h) { return halfedges[h].tail; }, loop, plan_loop);
+    }
+    std::sort(left_open.begin(), left_open.end());
+
+    // Pass 2: fill the loops that share no vertex with one left open. A loop left open may be
+    // an island of kept faces inside a hole that touches it at a vertex (a kept face whose
+    // three neighbours are missing): the hole's loop around it would be filled over it.
+    // Leaving the whole region to carve_repair.h keeps the faces from overlapping.
+    std::vector<Diagonal> diagonals;
+    std::vector<char>& closed_by_fill = done; // reused: every entry is 1 after pass 1
+    std::fill(closed_by_fill.begin(), closed_by_fill.end(), 0);
+    for(std::size_t l = 0; l + 1 < loop_start.size(); ++l) {
+      const std::size_t* first = loop_halfedges.data() + loop_start[l];
+      const std::size_t size = loop_start[l + 1] - loop_start[l];
+      polygon.resize(size);
+      bool touches_open = false;
+      for(std::size_t p = 0; p < size; ++p) {
+        polygon[p] = halfedges[first[hole_corner(p, size)]].tail;
+        touches_open = touches_open || std::binary_search(left_open.begin(), left_open.end(), polygon[p]);
+      }
+      if(touches_open)
+        continue;
+      diagonals.clear();
+      for(std::size_t e = loop_ears_start[l]; e < loop_ears_start[l + 1]; ++e) {
+        const Hole_ear& t = loop_ears[e];
+        Vertex_handle corner[3];
+        for(int c = 0; c < 3; ++c) {
+          const std::uintptr_t code = halfedges[first[hole_corner(t.corner[c], size)]].code;
+          corner[c] = face_of(code)->vertex(ccw(int(code & index_bits)));
+        }
+        const Face_handle f = tds.create_face(corner[0], corner[1], corner[2]);
+        out_.filled_faces.push_back(&*f);
+        // The edge opposite slot i runs from polygon vertex `from` to `to`.
+        for(int i = 0; i < 3; ++i) {
+          const std::size_t from = t.corner[ccw(i)], to = t.corner[cw(i)];
+          const std::uint32_t tail = polygon[from], head = polygon[to];
+          if(t.closes[i] != Hole_ear::diagonal) { // a side of the hole: its open half-edge is the twin
+            const std::uintptr_t twin = halfedges[first[t.closes[i]]].code;
+            link(f, i, tail, head, face_of(twin), int(twin & index_bits));
+            continue;
+          }
+          const auto other = std::find_if(diagonals.begin(), diagonals.end(),
+                                          [&](const Diagonal& d) { return d.from == to && d.to == from; });
+          if(other == diagonals.end())
+            diagonals.push_back(Diagonal{from, to, f, i});
+          else
+            link(f, i, tail, head, other->face, other->index);
+        }
+      }
+      for(std::size_t q = 0; q < size; ++q)
+        closed_by_fill[first[q]] = 1;
+      ++out_.holes_filled;
+    }
+    std::sort(out_.filled_faces.begin(), out_.filled_faces.end());
+    std::size_t left = 0;
+    for(std::size_t k = 0; k < m; ++k)
+      if(!closed_by_fill[k])
+        halfedges[left++] = halfedges[k];
+    halfedges.resize(left);
+  }
+
+  // Links the unpaired half-edges into one cycle, checks that it is a convex polygon wound
+  // once counterclockwise, and closes the triangulation with the infinite faces.
+  template <class PointIterator>
+  Outcome close_hull(PointIterator points, const std::vector<Boundary_halfedge>& hull)
+  {
+    const std::size_t m = hull.size();
+    for(std::size_t k = 1; k < m; ++k)
+      if(hull[k].tail == hull[k - 1].tail) {
+        return Outcome::boundary_pinched;
+      }
+    std::vector<std::size_t> cycle; // positions in `hull`, in ccw order
+    cycle.reserve(m);
+    std::size_t at = 0;
+    for(std::size_t k = 0; k < m; ++k) {
+      cycle.push_back(at);
+      const Boundary_halfedge probe{hull[at].head, 0, 0};
+      const auto next = std::lower_bound(hull.begin(), hull.end(), probe);
+      if(next == hull.end() || next->tail != probe.tail) {
+        return Outcome::boundary_not_closed;
+      }
+      at = std::size_t(next - hull.begin());
+      if(at == 0 && k + 1 < m) {
+        return Outcome::boundary_with_holes;
+      }
+    }
+    if(at != 0 || !is_convex_ccw_cycle(tr_.geom_traits(), m, [&](std::size_t k) -> const Point& {
+         return points[hull[cycle[k]].tail];
+       })) {
+      return Outcome::boundary_not_convex;
+    }
+    // The face outside hull half-edge u->v is (v, u, infinite); consecutive ones share the
+    // edge (v, infinite), opposite u in the first and opposite w in the second.
+    auto& tds = tr_.tds();
+    const Vertex_handle infinite = tr_.infinite_vertex();
+    std::vector<Face_handle> outside(m);
+    for(std::size_t k = 0; k < m; ++k) {
+      const std::uintptr_t code = hull[cycle[k]].code;
+      const Face_handle inside = tds.faces().iterator_to(*reinterpret_cast<Face*>(code & ~flag_bits));
+      const int i = int(code & index_bits);
+      outside[k] = tds.create_face(inside->vertex(cw(i)), inside->vertex(ccw(i)), infinite);
+      tds.set_adjacency(outside[k], 2, inside, i);
+    }
+    for(std::size_t k = 0; k < m; ++k)
+      tds.set_adjacency(outside[k], 1, outside[(k + 1) % m], 0);
+    infinite->set_face(outside[0]);
+    return Outcome::ok;
+  }
+
+  // Faces the tolerant import may leave out before it gives up: each one usually costs the
+  // local repair a carved star, and past 1.5% of the faces (measured: index triples of a
+  // triangulation whose points then moved by 0.1 spacing, 5% of the faces inverted) the
+  // repair costs more than a rebuild; stopping early saves the rest of the import.
+  std::size_t max_dropped() const { return number_of_faces_ / 64 + 64; }
+
+  Triangulation& tr_;
+  const std::size_t n_, number_of_faces_;
+  Imported_prediction<Triangulation>& out_;
+  const bool tolerant_;
+  std::size_t max_failing_ = std::size_t(-1); // see run()
+};
+
+} // namespace internal
+} // namespace Delaunay_from_prediction
+} // namespace CGAL
+
+#endif // CGAL_DELAUNAY_FROM_PREDICTION_INTERNAL_IMPORT_IMPORT_PREDICTION_H
