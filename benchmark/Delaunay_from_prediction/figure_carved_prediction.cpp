@@ -12,7 +12,7 @@
 // certificate collecting the faces that are not counterclockwise (with Lawson's flips between
 // counterclockwise faces on its way, drawn as kept faces), untangle_by_flips(), and a
 // Carve_repair with the star of the vertex opposite the longest edge of each face still bad
-// carved (the choice of internal::carve_in_place) and plan(default_carve_limits(n)). It does
+// carved (the choice of internal::carve_and_reinsert) and plan(default_carve_limits(n)). It does
 // not commit: it reads is_removed() of every face and detached(), and draws
 //   kept faces (light grey), faces flipped by the untangling (light orange), carved faces
 //   (light red), the faces inverted before the untangling (dark red outlines), the boundary of
@@ -209,7 +209,7 @@ int main(int argc, char** argv)
     v->set_point(moved[v->info()]);
   DT copy(tr); // for make_delaunay()
 
-  // 2. What make_delaunay() does before the repair commits (make_delaunay, carve_in_place).
+  // 2. What make_delaunay() does before the repair commits (make_delaunay, carve_and_reinsert).
   std::vector<std::pair<Face_handle, int>> stack;
   std::vector<Face_handle> bad;
   std::size_t edges_tested = 0, flips = 0;
@@ -219,7 +219,7 @@ int main(int argc, char** argv)
   std::vector<Face_handle> touched;
   DFP::internal::Inline_flips<DT> inline_flips{DFP::internal::default_max_flips(tr.number_of_vertices()), flips,
                                                touched, untangled};
-  const DFP::Outcome why = DFP::internal::certify_triangulation(
+  const DFP::Outcome why = DFP::internal::certify_faces(
       tr, stack, edges_tested, hull_is_convex, &bad, limits.max_bad_faces, &inline_flips);
   if(why != DFP::Outcome::ok) {
     std::size_t not_ccw = 0;
@@ -244,7 +244,7 @@ int main(int argc, char** argv)
   DFP::internal::untangle_by_flips(tr, bad, stack, untangled, touched);
 
   DFP::internal::Carve_repair<DT> carve(tr, true);
-  for(const Face_handle f : bad) { // the choice of carve_in_place
+  for(const Face_handle f : bad) { // the choice of carve_and_reinsert
     int crossing = 0;
     double longest = -1;
     for(int i = 0; i < 3; ++i) {

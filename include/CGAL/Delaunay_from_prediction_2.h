@@ -12,16 +12,13 @@
 
 #include <CGAL/Delaunay_from_prediction/Statistics.h>
 #include <CGAL/Delaunay_from_prediction/parameters.h>
-#include <CGAL/Delaunay_from_prediction/internal/repair/carve_repair.h>
-#include <CGAL/Delaunay_from_prediction/internal/toolbox/concurrency.h>
-#include <CGAL/Delaunay_from_prediction/internal/repair/flips.h>
+#include <CGAL/Delaunay_from_prediction/visitor.h>
 #include <CGAL/Delaunay_from_prediction/internal/build/hierarchy.h>
 #include <CGAL/Delaunay_from_prediction/internal/check/input_check.h>
-#include <CGAL/Delaunay_from_prediction/internal/prediction_pipeline.h>
-#include <CGAL/Delaunay_from_prediction/internal/build/rebuild.h>
-#include <CGAL/Delaunay_from_prediction/internal/repair/sort_addresses.h>
-#include <CGAL/Delaunay_from_prediction/internal/repair/t_division_repair.h>
-#include <CGAL/Delaunay_from_prediction/internal/import/tds_certify.h>
+#include <CGAL/Delaunay_from_prediction/internal/pipeline/in_place_stages.h>
+#include <CGAL/Delaunay_from_prediction/internal/pipeline/index_triples_stages.h>
+#include <CGAL/Delaunay_from_prediction/internal/pipeline/prediction_pipeline.h>
+#include <CGAL/Delaunay_from_prediction/internal/toolbox/concurrency.h>
 
 #include <CGAL/Named_function_parameters.h>
 
@@ -142,49 +139,14 @@ Statistics delaunay_from_prediction(const PointRange& points, const FaceRange& f
   if constexpr(internal::is_triangulation_hierarchy<DT>::value) { // level 0, then the upper levels
     return internal::with_levels_rebuilt(
         dt, [&](auto& level0) { return delaunay_from_prediction<ConcurrencyTag>(points, faces, level0, np); });
-  } else { // the body below, not instantiated for a hierarchy
-  using parameters::choose_parameter;
-  using parameters::get_parameter;
-
-  Statistics stats;
-  const auto point_at = std::begin(points);
-  const std::size_t n = std::size_t(std::distance(std::begin(points), std::end(points)));
-  const std::size_t number_of_faces = std::size_t(std::distance(std::begin(faces), std::end(faces)));
-  stats.faces_in = number_of_faces;
-  const std::size_t max_flips = choose_parameter(get_parameter(np, internal_np::max_flips),
-                                                 internal::default_max_flips(n));
-  const bool screen = choose_parameter(get_parameter(np, internal_np::screen_prediction), true);
-  const Strategy strategy = choose_parameter(get_parameter(np, internal_np::strategy), Strategy::automatic);
-  const std::size_t region_size = choose_parameter(
-      get_parameter(np, internal_np::region_size),
-      strategy == Strategy::regions ? internal::default_prediction_region_size(n, parallel ? internal::available_threads() : 1)
-                                    : internal::default_region_size(n));
-  const auto& gt = dt.geom_traits();
-  const Tuning tuning = choose_parameter(get_parameter(np, internal_np::tuning), Tuning());
-  auto visitor_value = choose_parameter<Default_visitor>(get_parameter(np, internal_np::visitor));
-  auto& visitor = internal::unwrap_visitor(visitor_value);
-
-  // Check, then import and certify into a fresh triangulation (Invalid_prediction is thrown
-  // before `dt` is touched).
-  if constexpr(internal::decides_by_exact_predicates<typename DT::Geom_traits>::value) {
-    // Inexact predicates (internal/toolbox/predicates.h): the faces are only checked (malformed
-    // ones throw), the faces are decided by exact predicates (rebuild.h).
-    visitor.stage_begin(Stage::check);
-    internal::check_points_are_finite(point_at, n);
-    std::size_t k = 0, idx[3];
-    for(const auto& face : faces)
-      internal::read_face(face, k++, n, idx);
-    visitor.stage_end(Stage::check);
-    visitor.stage_begin(Stage::rebuild);
-    DT built(gt);
-    internal::build_with_exact_predicates(built, point_at, n, stats);
-    dt.swap(built);
-    visitor.stage_end(Stage::rebuild);
-    return stats;
-  }
-  constexpr bool default_flip_budget = parameters::is_default_parameter<NamedParameters, internal_np::max_flips_t>::value;
-  return internal::delaunay_from_index_triples(point_at, n, faces, number_of_faces, dt, max_flips, default_flip_budget,
-                                               screen, strategy, region_size, stats, parallel, tuning, visitor);
+  } else { // not instantiated for a hierarchy
+    auto point_at = std::begin(points);
+    const std::size_t n = std::size_t(std::distance(std::begin(points), std::end(points)));
+    const internal::Pipeline_options options = internal::read_pipeline_options(np, n, parallel);
+    auto visitor = parameters::choose_parameter<Default_visitor>(parameters::get_parameter(np, internal_np::visitor));
+    internal::Index_triples_stages<DT, decltype(point_at), FaceRange> stages(
+        point_at, n, faces, std::size_t(std::distance(std::begin(faces), std::end(faces))), dt, options);
+    return internal::run_prediction_pipeline(stages, options, internal::unwrap_visitor(visitor));
   } // not a hierarchy
 }
 
@@ -262,166 +224,11 @@ Statistics make_delaunay(Triangulation& tr, const NamedParameters& np = paramete
   constexpr bool parallel = internal::runs_in_parallel<ConcurrencyTag>();
   if constexpr(internal::is_triangulation_hierarchy<Triangulation>::value) { // level 0, then the upper levels
     return internal::with_levels_rebuilt(tr, [&](auto& level0) { return make_delaunay<ConcurrencyTag>(level0, np); });
-  } else { // the body below, not instantiated for a hierarchy
-  using parameters::choose_parameter;
-  using parameters::get_parameter;
-  using Face_handle = typename Triangulation::Face_handle;
-
-  Statistics stats;
-  stats.faces_in = tr.dimension() == 2 ? tr.number_of_faces() : 0;
-  const std::size_t max_flips = choose_parameter(get_parameter(np, internal_np::max_flips),
-                                                 internal::default_max_flips(tr.number_of_vertices()));
-  const Strategy strategy = choose_parameter(get_parameter(np, internal_np::strategy), Strategy::automatic);
-  const Tuning tuning = choose_parameter(get_parameter(np, internal_np::tuning), Tuning());
-  auto visitor_value = choose_parameter<Default_visitor>(get_parameter(np, internal_np::visitor));
-  auto& visitor = internal::unwrap_visitor(visitor_value);
-  if(tr.number_of_vertices() == 0)
-    return stats;
-  visitor.stage_begin(Stage::check);
-  internal::check_vertices_are_finite(tr); // throws before `tr` is touched
-  visitor.stage_end(Stage::check);
-  // Inexact predicates (internal/toolbox/predicates.h): flips, walks and certificates could
-  // cycle or corrupt; the faces are rebuilt around the same vertices, decided by exact predicates.
-  if constexpr(internal::decides_by_exact_predicates<typename Triangulation::Geom_traits>::value) {
-    stats.fell_back = true;
-    stats.outcome = Outcome::inexact_predicates;
-    visitor.stage_begin(Stage::rebuild);
-    internal::rebuild_keeping_vertices(tr, stats); // leaves `tr` as it is when it throws
-    visitor.stage_end(Stage::rebuild);
-    return stats;
-  }
-
-  const bool carve = strategy == Strategy::automatic || strategy == Strategy::carve;
-  const bool divide = strategy == Strategy::t_division;
-  const std::size_t region_size = choose_parameter(
-      get_parameter(np, internal_np::region_size),
-      strategy == Strategy::regions
-          ? internal::default_prediction_region_size(tr.number_of_vertices(),
-                                                               parallel ? internal::available_threads() : 1)
-          : internal::default_region_size(tr.number_of_vertices()));
-  // With `parallel`, a rebuild builds aside in blocks (block_parallel_build.h).
-  const std::size_t blocks = parallel ? internal::default_block_count(tr.number_of_vertices(),
-                                                                      internal::available_threads(), tuning)
-                                      : 1;
-  auto build_aside_in_blocks = [&](auto& aside, auto points, std::size_t n) {
-    Statistics ignored;
-    return blocks > 1 && internal::build_in_blocks(aside, points, n, ignored, blocks);
-  };
-  if(strategy == Strategy::regions && tr.dimension() == 2 && tr.number_of_vertices() < std::size_t(internal::no_region)) {
-    // Theorem 5.4 in practical form (prediction_regions_build.h): the faces of `tr` are the
-    // prediction; the triangulation is built aside by regions, then put on the same vertices.
-    internal::rebuild_by_prediction_regions(tr, region_size, stats, parallel, build_aside_in_blocks, visitor);
-    return stats;
-  }
-
-  std::vector<std::pair<Face_handle, int>> stack;
-  std::vector<Face_handle> bad;
-  bool hull_is_convex = false;
-  const std::size_t max_bad = internal::default_carve_limits(tr.number_of_vertices()).max_bad_faces;
-  // Every flip until the triangulation is certified again (inline, untangling) is logged: if
-  // the rebuild below finds two vertices at the same point, they are undone before it
-  // throws, so that `tr` is left as it was (a carve rolled back updates the log).
-  internal::Flip_log<Triangulation> flips_before_carve;
-  std::vector<Face_handle> touched;
-  // Lawson's flips start during certification, except for the t-division, which plans its
-  // regions from the edges that fail in the prediction as given, and in parallel, where the
-  // faces are only read while they are certified, block by block (tds_certify.h).
-  const bool flip_inline = !divide && !parallel;
-  internal::Inline_flips<Triangulation> inline_flips{max_flips, stats.flips, touched, flips_before_carve};
-  Outcome why = Outcome::rebuild_requested; // Strategy::rebuild, spanning_tree: the prediction is not used
-  if(strategy != Strategy::rebuild && strategy != Strategy::spanning_tree) {
-    visitor.stage_begin(Stage::certify);
-    if((carve || divide) && internal::inverted_faces_exceed_early(tr, max_bad)) {
-      why = Outcome::too_many_inverted_faces; // told from a sample, before any test or flip (tds_certify.h)
-    } else if(parallel) {
-      why = internal::certify_faces_in_blocks(tr, stack, stats.edges_tested, carve || divide ? &bad : nullptr, max_bad);
-      hull_is_convex = why == Outcome::ok && internal::hull_is_convex_and_wound_once(tr);
-    } else {
-      why = internal::certify_triangulation(tr, stack, stats.edges_tested, hull_is_convex,
-                                            carve || divide ? &bad : nullptr, max_bad,
-                                            flip_inline ? &inline_flips : nullptr);
-    }
-    visitor.stage_end(Stage::certify);
-  }
-  if(why == Outcome::ok)
-    stats.edges_not_locally_delaunay = flip_inline ? inline_flips.edges_failing : stack.size();
-  // Lawson needs at least a flip per failing edge: past the budget, the flips are wasted.
-  if(why == Outcome::ok && stats.edges_not_locally_delaunay > max_flips)
-    why = Outcome::flip_budget_exhausted;
-  // Faces that are not ccw: first untangled by flips, then the rest carved (carve_repair.h).
-  if(why == Outcome::ok && divide) {
-    // Theorem 2.1 (t_division_repair.h). If it does not pay or cannot be planned, `tr` is
-    // untouched and the carve takes over; if the flip budget runs out, `tr` is a valid
-    // triangulation of the same vertices, rebuilt below.
-    std::unique_ptr<internal::T_division_repair<Triangulation>> regions;
-    std::vector<const void*> modified;
-    visitor.stage_begin(Stage::t_division);
-    why = internal::repair_by_t_division(tr, regions, bad, hull_is_convex, stack, true, region_size,
-                                      tuning.t_division_budget_factor, modified, stats, true, [](auto, auto) {
-                                        CGAL_assertion_msg(false, "duplicates were ruled out before");
-                                      });
-    visitor.stage_end(Stage::t_division);
-    if(why == Outcome::ok) {
-      // Reinserted points make a few flips each, as in any incremental construction: they
-      // count on top of the budget for the repair of the prediction.
-      visitor.stage_begin(Stage::flips);
-      const bool flipped = internal::lawson_flip(tr, stack, max_flips + 4 * regions->detached().size(), stats.flips,
-                                                 touched, parallel);
-      visitor.stage_end(Stage::flips);
-      if(flipped) {
-        stats.faces_certified = stats.faces_in - stats.faces_carved -
-                                internal::count_distinct_addresses<typename Triangulation::Face>(
-                                    modified, touched, 0, [&](const void* f) { return !regions->is_created(f); });
-        return stats;
-      }
-      why = Outcome::flip_budget_exhausted;
-    } else {
-      // Not worth dividing, or no plan: `tr` is untouched, the carve below takes over.
-      why = Outcome::ok;
-    }
-  }
-  if(why == Outcome::ok && !bad.empty()) {
-    const std::size_t inline_flipped = flips_before_carve.size();
-    visitor.stage_begin(Stage::untangle);
-    internal::untangle_by_flips(tr, bad, stack, flips_before_carve, touched, parallel);
-    visitor.stage_end(Stage::untangle);
-    stats.flips += flips_before_carve.size() - inline_flipped;
-    if(!bad.empty()) {
-      why = internal::carve_in_place(tr, bad, stack, touched, flips_before_carve, max_flips, stats, parallel, visitor);
-      if(why == Outcome::ok)
-        return stats;
-      if(why == Outcome::flip_budget_exhausted)
-        flips_before_carve.clear(); // the carve was committed: a triangulation again, nothing to undo
-    }
-  }
-  if(why == Outcome::ok) {
-    visitor.stage_begin(Stage::flips);
-    std::vector<const void*> hull_faces; // finite faces made by convexify_hull
-    if(!hull_is_convex && !internal::convexify_hull(tr, stack, hull_faces, stats.flips)) {
-      why = Outcome::hull_not_convex;
-    } else if(internal::lawson_flip(tr, stack, max_flips, stats.flips, touched, parallel)) {
-      stats.faces_certified = stats.faces_in - internal::count_distinct(touched, hull_faces);
-      visitor.stage_end(Stage::flips);
-      return stats;
-    } else {
-      why = Outcome::flip_budget_exhausted;
-      flips_before_carve.clear(); // a triangulation again: no duplicates, nothing to undo
-    }
-    visitor.stage_end(Stage::flips);
-  }
-  stats.fell_back = true;
-  stats.outcome = why;
-  stats.faces_certified = 0;
-  stats.points_reinserted = 0;
-  visitor.stage_begin(Stage::rebuild);
-  try {
-    internal::rebuild_keeping_vertices(tr, stats, build_aside_in_blocks); // leaves `tr` as it is when it throws
-  } catch(const Invalid_prediction&) {
-    internal::undo_flips(tr, flips_before_carve);
-    throw;
-  }
-  visitor.stage_end(Stage::rebuild);
-  return stats;
+  } else { // not instantiated for a hierarchy
+    const internal::Pipeline_options options = internal::read_pipeline_options(np, tr.number_of_vertices(), parallel);
+    auto visitor = parameters::choose_parameter<Default_visitor>(parameters::get_parameter(np, internal_np::visitor));
+    internal::In_place_stages<Triangulation> stages(tr, options);
+    return internal::run_prediction_pipeline(stages, options, internal::unwrap_visitor(visitor));
   } // not a hierarchy
 }
 

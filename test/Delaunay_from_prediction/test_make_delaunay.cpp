@@ -542,7 +542,7 @@ void test_flip_log_survives_rollback(CGAL::Random& rng)
     std::size_t flips = 0, tested = 0;
     bool hull_is_convex = false;
     I::Inline_flips<Tr> inline_flips{tr.number_of_vertices(), flips, touched, log};
-    DFP_CHECK(I::certify_triangulation(tr, stack, tested, hull_is_convex, &bad, tr.number_of_faces(),
+    DFP_CHECK(I::certify_faces(tr, stack, tested, hull_is_convex, &bad, tr.number_of_faces(),
                                        &inline_flips) == DFP::Outcome::ok);
     DFP_CHECK(flips > 0 && log.size() == flips);
     I::untangle_by_flips(tr, bad, stack, log, touched);

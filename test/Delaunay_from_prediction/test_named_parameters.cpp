@@ -335,7 +335,8 @@ std::vector<DFP::Stage> paired_stages(const Stage_recorder& r)
 
 // A visitor sees every stage begin and end in pairs, in the order the pipeline runs them, for
 // both entry points, sequential and parallel: a correct prediction (no rebuild), one that falls
-// back (rebuild), make_delaunay with inverted faces (untangled, carved).
+// back (rebuild), make_delaunay with inverted faces (untangled, carved). Both entry points run
+// the same driver: the screens come before the import or the certification in place.
 void test_visitor(CGAL::Random& rng)
 {
   using S = DFP::Stage;
@@ -384,7 +385,7 @@ void test_visitor(CGAL::Random& rng)
       const auto [st, r] = md(tr, NP::max_flips(std::size_t(-1)));
       check_is_cgal_delaunay(tr, points);
       DFP_CHECK(!st.fell_back);
-      expect(r, {S::check, S::certify, S::flips});
+      expect(r, {S::check, S::screen, S::certify, S::flips});
     }
     {
       Scope s("make_delaunay, max_flips(0) after 20 flips: falls back");
@@ -395,7 +396,7 @@ void test_visitor(CGAL::Random& rng)
       const auto [st, r] = md(tr, NP::max_flips(0));
       check_is_cgal_delaunay(tr, points);
       DFP_CHECK(st.fell_back);
-      expect(r, {S::check, S::certify, S::rebuild});
+      expect(r, {S::check, S::screen, S::certify, S::rebuild});
     }
     {
       Scope s("make_delaunay, 8 vertices moved by 3 mean spacings: inverted faces");
@@ -412,10 +413,10 @@ void test_visitor(CGAL::Random& rng)
       check_is_cgal_delaunay(tr, moved);
       DFP_CHECK_MSG(!st.fell_back, to_string(st.outcome));
       const Stages got = paired_stages(r);
-      DFP_CHECK_MSG(got == Stages({S::check, S::certify, S::untangle, S::carve, S::flips}) ||
-                        got == Stages({S::check, S::certify, S::untangle, S::flips}),
+      DFP_CHECK_MSG(got == Stages({S::check, S::screen, S::certify, S::untangle, S::carve, S::flips}) ||
+                        got == Stages({S::check, S::screen, S::certify, S::untangle, S::flips}),
                     stage_names(got));
-      DFP_CHECK_MSG(st.faces_carved == 0 || got.size() == 5, stage_names(got) << ", " << st.faces_carved << " carved");
+      DFP_CHECK_MSG(st.faces_carved == 0 || got.size() == 6, stage_names(got) << ", " << st.faces_carved << " carved");
     }
   });
   {

@@ -271,7 +271,7 @@ std::vector<std::pair<typename Tr::Face_handle, int>> every_edge_of(Tr& tr)
   return edges;
 }
 
-// Lawson's flips in cells (flips.h, lawson_flip_in_cells()) on a DT of uniform points and on a
+// Lawson's flips in cells (flips.h, flip_in_cells()) on a DT of uniform points and on a
 // co-circular grid, after random flips of convex quadrilaterals: the result is CGAL's DT in
 // every concurrency, with every edge listed and with only those around the flips; with a budget too
 // small, the call fails and leaves a valid triangulation. Enough flips that the cells run
@@ -418,7 +418,7 @@ void untangling_in_cells(CGAL::Random& rng)
       std::vector<Face_handle> bad, touched;
       std::size_t tested = 0;
       bool hull_is_convex = false;
-      DFP_CHECK(I::certify_triangulation(tr, stack, tested, hull_is_convex, &bad, tr.number_of_faces()) ==
+      DFP_CHECK(I::certify_faces(tr, stack, tested, hull_is_convex, &bad, tr.number_of_faces()) ==
                 DFP::Outcome::ok);
       DFP_CHECK_MSG(bad.size() >= 4 * I::min_faces_to_untangle_in_cells, bad.size());
       const std::size_t stacked = stack.size();

@@ -245,7 +245,7 @@ public:
       internal::build_with_exact_predicates(dt, points, n, stats);
       return stats;
     }
-    internal::Vertex_grid<Vertex_handle> grid(n, xmin_, xmax_, ymin_, ymax_);
+    internal::Vertex_grid<Vertex_handle> grid(n, box_);
     const std::size_t cap = internal::walk_cap(n);
     std::vector<Vertex_handle> vertex(n);
     std::vector<std::pair<Face_handle, int>> flip_stack;
@@ -331,10 +331,9 @@ private:
       const internal::Box box = internal::bounding_box(n, [&](std::size_t i) -> const Point& { return centre_[i]; });
       // Widened by the radius, but finite: a box to infinity would give the grid no cells.
       const double huge = (std::numeric_limits<double>::max)();
-      xmin_ = (std::max)(box.xmin - max_radius, -huge);
-      xmax_ = (std::min)(box.xmax + max_radius, huge);
-      ymin_ = (std::max)(box.ymin - max_radius, -huge);
-      ymax_ = (std::min)(box.ymax + max_radius, huge);
+      box_ = internal::Box();
+      box_.add((std::max)(box.xmin - max_radius, -huge), (std::max)(box.ymin - max_radius, -huge));
+      box_.add((std::min)(box.xmax + max_radius, huge), (std::min)(box.ymax + max_radius, huge));
       scale_ = internal::unit_scale(box);
     }
     compute_hints();
@@ -366,7 +365,7 @@ private:
       else
         return Centre_triangulation();
     }();
-    internal::Vertex_grid<Vertex_handle> grid(n, xmin_, xmax_, ymin_, ymax_);
+    internal::Vertex_grid<Vertex_handle> grid(n, box_);
     std::vector<std::pair<Face_handle, int>> flip_stack;
     Vertex_handle previous;
     for(std::size_t r = 0; r < n; ++r) {
@@ -420,7 +419,7 @@ private:
   std::vector<std::uint32_t> order_;     // order_[r]: the disk inserted r-th
   std::vector<std::uint32_t> hint_rank_; // hint_rank_[r]: the rank of the hint of the disk of rank r (r > 0)
   std::vector<std::uint32_t> rank_;      // rank_[i]: the rank of disk i (inverse of order_)
-  double xmin_ = 0, xmax_ = 0, ymin_ = 0, ymax_ = 0;
+  internal::Box box_; // of the disks, finite
   double scale_ = 1; // unit_scale() of the centres' box, for the distances of compute_hints()
 };
 

@@ -55,6 +55,7 @@
 #include <functional>
 #include <limits>
 #include <memory>
+#include <optional>
 #include <utility>
 #include <vector>
 
@@ -182,6 +183,423 @@ struct Block_build_counts
   std::size_t walls_failing = 0; // of them, not locally Delaunay (repaired by flips)
 };
 
+// The stages of triangulate_blocks() (see there), sharing the blocks' outputs, DT(seam
+// vertices) and the faces created for the seams and the hull. Each stage that can find that
+// the pieces do not fit returns false.
+template <class DT, class PointIterator, class Kept>
+class Block_assembly
+{
+  using Gt = typename DT::Geom_traits;
+  using Rt = typename Block_triangulation<Gt>::type;
+  using Region_vertex = typename Rt::Vertex_handle;
+  using Region_face = typename Rt::Face_handle;
+  using Tds = typename DT::Triangulation_data_structure;
+  using Vertex_handle = typename DT::Vertex_handle;
+  using Face_handle = typename DT::Face_handle;
+  using Face_range = typename Tds::Face_range;
+  using Inserted = std::vector<std::pair<const void*, std::uint32_t>>; // (vertex, point) in order
+
+  struct Wall // kept face `face`'s edge i, from point u to point w (counterclockwise in it)
+  {
+    Face_handle face;
+    int i;
+    std::uint32_t u, w;
+  };
+  struct Block_output
+  {
+    std::unique_ptr<DT> dt;
+    std::vector<std::uint32_t> seam_points;
+    std::vector<Wall> walls;
+    std::size_t duplicates = 0, kept_faces = 0;
+  };
+  struct Wall_side // a wall's edge i of a face of DT(seam vertices), on the seam side
+  {
+    Region_face face;
+    int i;
+  };
+  static constexpr std::uint32_t reached = 8; // face info bit of the seam faces
+
+public:
+  Block_assembly(DT& dt, PointIterator points, std::size_t n, double scale, const std::vector<std::uint32_t>& order,
+                 const std::vector<Build_block>& region, const Kept& kept_in_block, bool parallel)
+      : dt_(dt), gt_(dt.geom_traits()), points_(points), n_(n), scale_(scale), order_(order), region_(region),
+        kept_in_block_(kept_in_block), parallel_(parallel), vertex_of_(n), out_(region.size())
+  {}
+
+  // The blocks, the seams, the faces linked, then spliced into `dt_` and certified.
+  bool run(Statistics& stats, Block_build_counts* counts)
+  {
+    for_each_block(parallel_, region_.size(), [&](std::size_t b) { triangulate_block(b); });
+    if(!triangulate_seams() || !mark_walls())
+      return false;
+    if(!reach_seam_faces())
+      return false;
+    create_seam_faces();
+    if(!link_seam_faces() || !link_walls() || !link_hull() || !drop_duplicates())
+      return false;
+    return splice_and_certify(stats, counts);
+  }
+
+private:
+  // Block b, on a thread: its triangulation, built in a triangulation of the caller's type
+  // whose vertices and kept faces become the result's (their containers spliced at the end).
+  // The other faces and the infinite vertex are deleted; the seam vertices' face() is set
+  // again by the seams.
+  void triangulate_block(std::size_t b)
+  {
+    const Build_block& block = region_[b];
+    Block_output& o = out_[b];
+    o.dt.reset(new DT(gt_));
+    DT& bdt = *o.dt;
+    std::vector<std::size_t> indices(order_.begin() + std::ptrdiff_t(block.begin),
+                                     order_.begin() + std::ptrdiff_t(block.end));
+    Inserted inserted;
+    inserted.reserve(indices.size());
+    insert_by_index(bdt, points_, indices, [&](std::size_t i, Vertex_handle v, bool is_new) {
+      if(is_new) {
+        set_index_info(v, i);
+        inserted.emplace_back(&*v, std::uint32_t(i));
+      } else {
+        merge_index_info(v, i);
+        ++o.duplicates;
+      }
+    });
+    std::vector<Face_handle> dropped;
+    Hash_map<const void*, std::uint32_t> seam(64);
+    find_dropped_faces(b, bdt, inserted, dropped, seam);
+    record_seam_points(bdt, inserted, seam, o);
+    Inserted().swap(inserted);
+    if(bdt.dimension() == 2)
+      record_walls(b, bdt, dropped, seam, o);
+    for(const std::uint32_t i : o.seam_points)
+      vertex_of_[i]->set_face(Face_handle());
+    for(const Face_handle f : dropped)
+      bdt.tds().delete_face(f);
+    bdt.tds().delete_vertex(bdt.infinite_vertex());
+    o.kept_faces = bdt.tds().faces().size();
+  }
+
+  // The face f of DT(block b) is kept: finite, and steered inside by `kept_in_block_`.
+  bool kept(std::size_t b, const DT& bdt, Face_handle f) const
+  {
+    auto xy_of = [&](Vertex_handle v) {
+      return std::array<double, 2>{CGAL::to_double(v->point().x()) * scale_, CGAL::to_double(v->point().y()) * scale_};
+    };
+    return !bdt.is_infinite(f) && kept_in_block_(b, xy_of(f->vertex(0)), xy_of(f->vertex(1)), xy_of(f->vertex(2)));
+  }
+
+  // The faces of DT(block b) not kept (`dropped`) and their finite vertices, the seam
+  // vertices (keys of `seam`, their points filled in next).
+  void find_dropped_faces(std::size_t b, DT& bdt, const Inserted& inserted, std::vector<Face_handle>& dropped,
+                          Hash_map<const void*, std::uint32_t>& seam) const
+  {
+    const Vertex_handle block_infinite = bdt.infinite_vertex();
+    if(bdt.dimension() < 2) { // every vertex to the seams, every face dropped
+      for(auto f = bdt.tds().faces().begin(); f != bdt.tds().faces().end(); ++f)
+        dropped.push_back(f);
+      for(const auto& v : inserted)
+        seam.insert(v.first, v.second);
+    } else {
+      for(auto f = bdt.all_faces_begin(); f != bdt.all_faces_end(); ++f)
+        if(!kept(b, bdt, f)) {
+          dropped.push_back(f);
+          for(int i = 0; i < 3; ++i)
+            if(f->vertex(i) != block_infinite)
+              seam.insert(&*f->vertex(i), 0);
+        }
+    }
+  }
+
+  // The seam points' indices, in the order of insertion, and their vertices in vertex_of_.
+  void record_seam_points(DT& bdt, const Inserted& inserted, Hash_map<const void*, std::uint32_t>& seam,
+                          Block_output& o)
+  {
+    for(const auto& v : inserted)
+      if(std::uint32_t* index = seam.find(v.first)) {
+        *index = v.second;
+        o.seam_points.push_back(v.second);
+        vertex_of_[v.second] =
+            bdt.tds().vertices().iterator_to(*static_cast<typename Tds::Vertex*>(const_cast<void*>(v.first)));
+      }
+  }
+
+  // The walls of block b: the edges of its kept faces shared with a dropped face.
+  void record_walls(std::size_t b, const DT& bdt, const std::vector<Face_handle>& dropped,
+                    const Hash_map<const void*, std::uint32_t>& seam, Block_output& o) const
+  {
+    for(const Face_handle f : dropped)
+      for(int i = 0; i < 3; ++i) {
+        const Face_handle g = f->neighbor(i);
+        if(kept(b, bdt, g)) {
+          const int j = g->index(f);
+          o.walls.push_back({g, j, *seam.find(&*g->vertex(ccw(j))), *seam.find(&*g->vertex(cw(j)))});
+        }
+      }
+  }
+
+  // The seams: DT(seam vertices); a seam point merged there with another block's vertex at the
+  // same point is a duplicate, its vertex dropped.
+  bool triangulate_seams()
+  {
+    std::vector<std::size_t> seam_indices;
+    for(const Block_output& o : out_)
+      seam_indices.insert(seam_indices.end(), o.seam_points.begin(), o.seam_points.end());
+    seam_points_ = seam_indices.size();
+    seams_.emplace(gt_);
+    seam_vertex_.resize(n_);
+    insert_by_index(*seams_, points_, seam_indices, [&](std::size_t i, Region_vertex v, bool is_new) {
+      seam_vertex_[i] = v;
+      if(is_new)
+        v->info() = std::uint32_t(i);
+      else
+        merged_.push_back({std::uint32_t(i), v->info()});
+    });
+    std::vector<std::size_t>().swap(seam_indices);
+    // (Below 2 only when every point is on one line: the sequential build is quick.)
+    return seams_->dimension() == 2;
+  }
+
+  // The walls found in DT(seam vertices), marked on their seam side (face info bit 1 << i);
+  // the faces beyond them are the seeds of the seam faces (stack_).
+  bool mark_walls()
+  {
+    Rt& seams = *seams_;
+    for(auto f = seams.all_faces_begin(); f != seams.all_faces_end(); ++f)
+      f->info() = 0;
+    for(const Block_output& o : out_)
+      walls_ += o.walls.size();
+    wall_side_.reserve(walls_);
+    for(const Block_output& o : out_)
+      for(const Wall& wall : o.walls) {
+        const Region_vertex u = seam_vertex_[wall.u], w = seam_vertex_[wall.w];
+        Region_face f;
+        int i;
+        // A wall's ends must be the seam vertices of their own points (not merged away).
+        if(u == Region_vertex() || w == Region_vertex() || u->info() != wall.u || w->info() != wall.w ||
+           !seams.is_edge(u, w, f, i))
+          return false;
+        if(f->vertex(Rt::ccw(i)) != w) { // the seam side has the edge from w to u
+          const Region_face g = f->neighbor(i);
+          i = g->index(f);
+          f = g;
+        }
+        if(f->info() & (1u << i))
+          return false; // two walls on one edge
+        f->info() |= 1u << i;
+        wall_side_.push_back({f, i});
+        if(!seams.is_infinite(f) && !(f->info() & reached)) {
+          f->info() |= reached;
+          stack_.push_back(f);
+        }
+      }
+    return true;
+  }
+
+  // The seam faces: those reached from the walls' seam side without crossing a wall (bit 8),
+  // numbered in reached_faces_ (the number kept in the face info, above the flags).
+  bool reach_seam_faces()
+  {
+    Rt& seams = *seams_;
+    if(walls_ == 0) // no face kept: the seams are everything
+      for(auto f = seams.finite_faces_begin(); f != seams.finite_faces_end(); ++f) {
+        f->info() |= reached;
+        stack_.push_back(f);
+      }
+    while(!stack_.empty()) {
+      const Region_face f = stack_.back();
+      stack_.pop_back();
+      f->info() |= std::uint32_t(reached_faces_.size()) << 4; // its number, above the flags
+      reached_faces_.push_back(f);
+      for(int i = 0; i < 3; ++i) {
+        const Region_face g = f->neighbor(i);
+        if(!(f->info() & (1u << i)) && !(g->info() & reached) && !seams.is_infinite(g)) {
+          g->info() |= reached;
+          stack_.push_back(g);
+        }
+      }
+    }
+    return reached_faces_.size() < (std::size_t(1) << 28);
+  }
+
+  // A face of the result for each seam face, on the blocks' vertices; the vertices' face()
+  // set to it.
+  void create_seam_faces()
+  {
+    seam_face_.resize(reached_faces_.size());
+    for(std::size_t k = 0; k < reached_faces_.size(); ++k) {
+      const Region_face f = reached_faces_[k];
+      seam_face_[k] = seam_faces_.emplace(vertex_of_[f->vertex(0)->info()], vertex_of_[f->vertex(1)->info()],
+                                          vertex_of_[f->vertex(2)->info()]);
+      for(int i = 0; i < 3; ++i)
+        seam_face_[k]->vertex(i)->set_face(seam_face_[k]);
+    }
+  }
+
+  Face_handle seam_face_of(Region_face f) const { return seam_face_[f->info() >> 4]; }
+
+  // The hull's infinite face outside edge i of f: face (b, a, inf) outside the hull edge from a
+  // to b; its neighbour 0 is the infinite face whose vertex 0 is a (linked by link_hull()).
+  void link_to_outside(Face_handle f, int i)
+  {
+    const Face_handle g = infinite_faces_.emplace(f->vertex(cw(i)), f->vertex(ccw(i)), dt_.infinite_vertex());
+    f->set_neighbor(i, g);
+    g->set_neighbor(2, f);
+    g->vertex(0)->set_face(g);
+    g->vertex(1)->set_face(g);
+    hull_.emplace_back(&*g->vertex(0), g);
+  }
+
+  // Links between seam faces, as in DT(seam vertices), and to the hull's infinite faces.
+  bool link_seam_faces()
+  {
+    for(std::size_t k = 0; k < reached_faces_.size(); ++k) {
+      const Region_face f = reached_faces_[k];
+      for(int i = 0; i < 3; ++i) {
+        if(f->info() & (1u << i))
+          continue; // a wall, linked below
+        const Region_face g = f->neighbor(i);
+        if(seams_->is_infinite(g)) {
+          link_to_outside(seam_face_[k], i);
+          continue;
+        }
+        const int j = g->index(f);
+        if(g->info() & (1u << j))
+          return false; // the other side is a wall's seam side too
+        seam_face_[k]->set_neighbor(i, seam_face_of(g));
+      }
+    }
+    return true;
+  }
+
+  // Links across the walls (or to the hull's infinite faces), each wall's two sides checked
+  // to be the same edge; the walls that are not locally Delaunay go to failing_.
+  bool link_walls()
+  {
+    std::size_t wall_index = 0;
+    for(const Block_output& o : out_)
+      for(const Wall& wall : o.walls) {
+        const Wall_side side = wall_side_[wall_index++];
+        if(seams_->is_infinite(side.face)) {
+          link_to_outside(wall.face, wall.i);
+          continue;
+        }
+        const Face_handle g = seam_face_of(side.face);
+        const Face_handle f = wall.face;
+        if(g->vertex(ccw(side.i)) != f->vertex(cw(wall.i)) || g->vertex(cw(side.i)) != f->vertex(ccw(wall.i)))
+          return false;
+        f->set_neighbor(wall.i, g);
+        g->set_neighbor(side.i, f);
+        if(!is_locally_delaunay(gt_, f->vertex(wall.i)->point(), f->vertex(ccw(wall.i))->point(),
+                                f->vertex(cw(wall.i))->point(), g->vertex(side.i)->point()))
+          failing_.emplace_back(f, wall.i);
+      }
+    return true;
+  }
+
+  // Links the hull's infinite faces around the hull, found by their vertex 0 (sorted by
+  // address); each hull vertex must be on it once, the hull at least a triangle.
+  bool link_hull()
+  {
+    std::sort(hull_.begin(), hull_.end(),
+              [](const auto& a, const auto& b) { return std::less<const void*>()(a.first, b.first); });
+    for(std::size_t k = 0; k < hull_.size(); ++k) {
+      if(k > 0 && hull_[k].first == hull_[k - 1].first)
+        return false; // a vertex twice on the hull
+      const Face_handle g = hull_[k].second;
+      const void* a = &*g->vertex(1);
+      const auto next = std::lower_bound(hull_.begin(), hull_.end(), a, [](const auto& h, const void* v) {
+        return std::less<const void*>()(h.first, v);
+      });
+      if(next == hull_.end() || next->first != a)
+        return false;
+      g->set_neighbor(0, next->second);
+      next->second->set_neighbor(1, g);
+    }
+    return hull_.size() >= 3;
+  }
+
+  // The duplicates merged into the vertex of their point (dropped_); every seam vertex must be
+  // in a face again (the others are in their kept faces).
+  bool drop_duplicates()
+  {
+    for(const auto& m : merged_) {
+      dropped_.push_back(vertex_of_[m[0]]);
+      merge_index_info_of(vertex_of_[m[1]], vertex_of_[m[0]]); // which holds its block's duplicates
+      ++duplicates_;
+    }
+    std::sort(dropped_.begin(), dropped_.end());
+    for(const Block_output& o : out_) {
+      duplicates_ += o.duplicates;
+      kept_faces_ += o.kept_faces;
+      for(const std::uint32_t i : o.seam_points)
+        if((vertex_of_[i]->face() == Face_handle()) !=
+           std::binary_search(dropped_.begin(), dropped_.end(), vertex_of_[i]))
+          return false; // a seam vertex in no face, or a dropped one in a face
+    }
+    return true;
+  }
+
+  // Spliced into the triangulation, checked, the failing walls flipped; `dt_` cleared if the
+  // check fails.
+  bool splice_and_certify(Statistics& stats, Block_build_counts* counts)
+  {
+    auto& tds = dt_.tds();
+    tds.faces().clear(); // the constructor's face of dimension -1
+    tds.set_dimension(2);
+    for(Block_output& o : out_) {
+      tds.vertices().merge(o.dt->tds().vertices());
+      tds.faces().merge(o.dt->tds().faces());
+      o.dt.reset();
+    }
+    tds.faces().merge(seam_faces_);
+    dt_.infinite_vertex()->set_face(hull_.front().second);
+    tds.faces().merge(infinite_faces_);
+    for(const Vertex_handle v : dropped_)
+      tds.delete_vertex(v);
+    const std::size_t walls_failing = failing_.size();
+    std::size_t flips = 0;
+    std::vector<Face_handle> touched;
+    if(!hull_is_convex_and_wound_once(dt_) ||
+       !lawson_flip(dt_, failing_, default_max_flips(n_), flips, touched, parallel_)) {
+      dt_.clear();
+      return false;
+    }
+    stats.points_reinserted += n_;
+    stats.duplicate_points += duplicates_;
+    if(counts != nullptr)
+      *counts = Block_build_counts{region_.size(), kept_faces_, seam_points_, walls_, walls_failing};
+    return true;
+  }
+
+  DT& dt_;
+  const Gt& gt_;
+  PointIterator points_;
+  const std::size_t n_;
+  const double scale_;
+  const std::vector<std::uint32_t>& order_;
+  const std::vector<Build_block>& region_;
+  const Kept& kept_in_block_;
+  const bool parallel_;
+  // Declared in the order the stages fill them.
+  std::vector<Vertex_handle> vertex_of_; // each block writes its own seam points' entries
+  std::vector<Block_output> out_;
+  std::size_t seam_points_ = 0;
+  std::optional<Rt> seams_;                                 // DT(seam vertices)
+  std::vector<Region_vertex> seam_vertex_;                  // the vertex in seams_ of each seam point
+  std::vector<std::array<std::uint32_t, 2>> merged_;        // (point, point of the seam vertex)
+  std::vector<Wall_side> wall_side_;                        // of each wall, in the blocks' order
+  std::vector<Region_face> stack_;
+  std::size_t walls_ = 0;
+  Face_range seam_faces_;
+  std::vector<Region_face> reached_faces_;                  // the seam faces of seams_, numbered
+  std::vector<Face_handle> seam_face_;                      // the result's face of each
+  Face_range infinite_faces_;
+  std::vector<std::pair<const void*, Face_handle>> hull_;   // (vertex 0, infinite face)
+  std::vector<std::pair<Face_handle, int>> failing_;        // walls not locally Delaunay
+  std::vector<Vertex_handle> dropped_;                      // duplicates' vertices, sorted
+  std::size_t duplicates_ = 0, kept_faces_ = 0;
+};
+
 // Builds DT(points[0, n)) into `dt` (no vertex yet) from blocks of the points: block b is
 // order[region[b].begin, region[b].end) (every point in exactly one block; its rectangle is not
 // read here). `kept(b, p, q, r)` says, on the scaled coordinates (`scale`, grid.h) of a face of
@@ -207,305 +625,9 @@ bool triangulate_blocks(DT& dt, PointIterator points, std::size_t n, double scal
                         const std::vector<std::uint32_t>& order, const std::vector<Build_block>& region,
                         const Kept& kept_in_block, Statistics& stats, bool parallel, Block_build_counts* counts)
 {
-  using Gt = typename DT::Geom_traits;
-  using Rt = typename Block_triangulation<Gt>::type;
-  using Region_vertex = typename Rt::Vertex_handle;
-  using Region_face = typename Rt::Face_handle;
-  using Tds = typename DT::Triangulation_data_structure;
-  using Vertex_handle = typename DT::Vertex_handle;
-  using Face_handle = typename DT::Face_handle;
-  using Face_range = typename Tds::Face_range;
   CGAL_precondition(dt.number_of_vertices() == 0);
-  const Gt& gt = dt.geom_traits();
-
-  // Each block, on a thread: its triangulation, built in a triangulation of the caller's type
-  // whose vertices and kept faces become the result's (their containers spliced at the end).
-  // The other faces and the infinite vertex are deleted; the seam vertices' face() is set
-  // again by the seams.
-  struct Wall // kept face `face`'s edge i, from point u to point w (counterclockwise in it)
-  {
-    Face_handle face;
-    int i;
-    std::uint32_t u, w;
-  };
-  struct Block_output
-  {
-    std::unique_ptr<DT> dt;
-    std::vector<std::uint32_t> seam_points;
-    std::vector<Wall> walls;
-    std::size_t duplicates = 0, kept_faces = 0;
-  };
-  std::vector<Vertex_handle> vertex_of(n); // each block writes its own seam points' entries
-  std::vector<Block_output> out(region.size());
-  for_each_block(parallel, region.size(), [&](std::size_t b) {
-    const Build_block& block = region[b];
-    Block_output& o = out[b];
-    o.dt.reset(new DT(gt));
-    DT& bdt = *o.dt;
-    auto& btds = bdt.tds();
-    std::vector<std::size_t> indices(order.begin() + std::ptrdiff_t(block.begin),
-                                     order.begin() + std::ptrdiff_t(block.end));
-    std::vector<std::pair<const void*, std::uint32_t>> inserted; // (vertex, point) in order
-    inserted.reserve(indices.size());
-    insert_by_index(bdt, points, indices, [&](std::size_t i, Vertex_handle v, bool is_new) {
-      if(is_new) {
-        set_index_info(v, i);
-        inserted.emplace_back(&*v, std::uint32_t(i));
-      } else {
-        merge_index_info(v, i);
-        ++o.duplicates;
-      }
-    });
-    const Vertex_handle block_infinite = bdt.infinite_vertex();
-    auto xy_of = [&](Vertex_handle v) {
-      return std::array<double, 2>{CGAL::to_double(v->point().x()) * scale, CGAL::to_double(v->point().y()) * scale};
-    };
-    auto kept = [&](Face_handle f) {
-      return !bdt.is_infinite(f) && kept_in_block(b, xy_of(f->vertex(0)), xy_of(f->vertex(1)), xy_of(f->vertex(2)));
-    };
-    std::vector<Face_handle> dropped;
-    Hash_map<const void*, std::uint32_t> seam(64);
-    if(bdt.dimension() < 2) { // every vertex to the seams, every face dropped
-      for(auto f = btds.faces().begin(); f != btds.faces().end(); ++f)
-        dropped.push_back(f);
-      for(const auto& v : inserted)
-        seam.insert(v.first, v.second);
-    } else {
-      for(auto f = bdt.all_faces_begin(); f != bdt.all_faces_end(); ++f)
-        if(!kept(f)) {
-          dropped.push_back(f);
-          for(int i = 0; i < 3; ++i)
-            if(f->vertex(i) != block_infinite)
-              seam.insert(&*f->vertex(i), 0);
-        }
-    }
-    // The seam points' indices, in the order of insertion.
-    for(const auto& v : inserted)
-      if(std::uint32_t* index = seam.find(v.first)) {
-        *index = v.second;
-        o.seam_points.push_back(v.second);
-        vertex_of[v.second] = btds.vertices().iterator_to(*static_cast<typename Tds::Vertex*>(const_cast<void*>(v.first)));
-      }
-    std::vector<std::pair<const void*, std::uint32_t>>().swap(inserted);
-    if(bdt.dimension() == 2)
-      for(const Face_handle f : dropped)
-        for(int i = 0; i < 3; ++i) {
-          const Face_handle g = f->neighbor(i);
-          if(kept(g)) {
-            const int j = g->index(f);
-            o.walls.push_back({g, j, *seam.find(&*g->vertex(ccw(j))), *seam.find(&*g->vertex(cw(j)))});
-          }
-        }
-    for(const std::uint32_t i : o.seam_points)
-      vertex_of[i]->set_face(Face_handle());
-    for(const Face_handle f : dropped)
-      btds.delete_face(f);
-    btds.delete_vertex(block_infinite);
-    o.kept_faces = btds.faces().size();
-  });
-
-  // The seams: DT(seam vertices); a seam point merged there with another block's vertex at the
-  // same point is a duplicate, its vertex dropped.
-  std::vector<std::size_t> seam_indices;
-  for(const Block_output& o : out)
-    seam_indices.insert(seam_indices.end(), o.seam_points.begin(), o.seam_points.end());
-  const std::size_t seam_points = seam_indices.size();
-  Rt seams(gt);
-  std::vector<Region_vertex> seam_vertex(n);
-  std::vector<std::array<std::uint32_t, 2>> merged; // (point, point of the seam vertex)
-  insert_by_index(seams, points, seam_indices, [&](std::size_t i, Region_vertex v, bool is_new) {
-    seam_vertex[i] = v;
-    if(is_new)
-      v->info() = std::uint32_t(i);
-    else
-      merged.push_back({std::uint32_t(i), v->info()});
-  });
-  std::vector<std::size_t>().swap(seam_indices);
-  if(seams.dimension() < 2)
-    return false; // (only when every point is on one line: the sequential build is quick)
-
-  // The walls found in DT(seam vertices), marked on their seam side (face info bit 1 << i);
-  // the seam faces are those reached from there without crossing a wall (bit 8).
-  for(auto f = seams.all_faces_begin(); f != seams.all_faces_end(); ++f)
-    f->info() = 0;
-  constexpr std::uint32_t reached = 8;
-  struct Wall_side
-  {
-    Region_face face;
-    int i;
-  };
-  std::vector<Wall_side> wall_side;
-  std::vector<Region_face> stack;
-  std::size_t walls = 0;
-  for(const Block_output& o : out)
-    walls += o.walls.size();
-  wall_side.reserve(walls);
-  for(const Block_output& o : out)
-    for(const Wall& wall : o.walls) {
-      const Region_vertex u = seam_vertex[wall.u], w = seam_vertex[wall.w];
-      Region_face f;
-      int i;
-      // A wall's ends must be the seam vertices of their own points (not merged away).
-      if(u == Region_vertex() || w == Region_vertex() || u->info() != wall.u || w->info() != wall.w ||
-         !seams.is_edge(u, w, f, i))
-        return false;
-      if(f->vertex(Rt::ccw(i)) != w) { // the seam side has the edge from w to u
-        const Region_face g = f->neighbor(i);
-        i = g->index(f);
-        f = g;
-      }
-      if(f->info() & (1u << i))
-        return false; // two walls on one edge
-      f->info() |= 1u << i;
-      wall_side.push_back({f, i});
-      if(!seams.is_infinite(f) && !(f->info() & reached)) {
-        f->info() |= reached;
-        stack.push_back(f);
-      }
-    }
-  if(walls == 0) // no face kept: the seams are everything
-    for(auto f = seams.finite_faces_begin(); f != seams.finite_faces_end(); ++f) {
-      f->info() |= reached;
-      stack.push_back(f);
-    }
-  Face_range seam_faces;
-  std::vector<Region_face> reached_faces;
-  while(!stack.empty()) {
-    const Region_face f = stack.back();
-    stack.pop_back();
-    f->info() |= std::uint32_t(reached_faces.size()) << 4; // its number, above the flags
-    reached_faces.push_back(f);
-    for(int i = 0; i < 3; ++i) {
-      const Region_face g = f->neighbor(i);
-      if(!(f->info() & (1u << i)) && !(g->info() & reached) && !seams.is_infinite(g)) {
-        g->info() |= reached;
-        stack.push_back(g);
-      }
-    }
-  }
-  if(reached_faces.size() >= (std::size_t(1) << 28))
-    return false;
-  std::vector<Face_handle> seam_face(reached_faces.size());
-  for(std::size_t k = 0; k < reached_faces.size(); ++k) {
-    const Region_face f = reached_faces[k];
-    seam_face[k] = seam_faces.emplace(vertex_of[f->vertex(0)->info()], vertex_of[f->vertex(1)->info()],
-                                      vertex_of[f->vertex(2)->info()]);
-    for(int i = 0; i < 3; ++i)
-      seam_face[k]->vertex(i)->set_face(seam_face[k]);
-  }
-  auto seam_face_of = [&](Region_face f) { return seam_face[f->info() >> 4]; };
-
-  // Links between seam faces, across walls, and to the hull's infinite faces (face (b, a, inf)
-  // outside the hull edge from a to b; its neighbour 0 is the infinite face whose vertex 0 is a).
-  Face_range infinite_faces;
-  std::vector<std::pair<const void*, Face_handle>> hull; // (vertex 0, infinite face)
-  const Vertex_handle infinite = dt.infinite_vertex();
-  auto outside = [&](Face_handle f, int i) {
-    const Face_handle g = infinite_faces.emplace(f->vertex(cw(i)), f->vertex(ccw(i)), infinite);
-    f->set_neighbor(i, g);
-    g->set_neighbor(2, f);
-    g->vertex(0)->set_face(g);
-    g->vertex(1)->set_face(g);
-    hull.emplace_back(&*g->vertex(0), g);
-  };
-  for(std::size_t k = 0; k < reached_faces.size(); ++k) {
-    const Region_face f = reached_faces[k];
-    for(int i = 0; i < 3; ++i) {
-      if(f->info() & (1u << i))
-        continue; // a wall, linked below
-      const Region_face g = f->neighbor(i);
-      if(seams.is_infinite(g)) {
-        outside(seam_face[k], i);
-        continue;
-      }
-      const int j = g->index(f);
-      if(g->info() & (1u << j))
-        return false; // the other side is a wall's seam side too
-      seam_face[k]->set_neighbor(i, seam_face_of(g));
-    }
-  }
-  std::size_t wall_index = 0;
-  std::vector<std::pair<Face_handle, int>> failing;
-  for(const Block_output& o : out)
-    for(const Wall& wall : o.walls) {
-      const Wall_side side = wall_side[wall_index++];
-      if(seams.is_infinite(side.face)) {
-        outside(wall.face, wall.i);
-        continue;
-      }
-      const Face_handle g = seam_face_of(side.face);
-      const Face_handle f = wall.face;
-      if(g->vertex(ccw(side.i)) != f->vertex(cw(wall.i)) || g->vertex(cw(side.i)) != f->vertex(ccw(wall.i)))
-        return false;
-      f->set_neighbor(wall.i, g);
-      g->set_neighbor(side.i, f);
-      if(!is_locally_delaunay(gt, f->vertex(wall.i)->point(), f->vertex(ccw(wall.i))->point(),
-                              f->vertex(cw(wall.i))->point(), g->vertex(side.i)->point()))
-        failing.emplace_back(f, wall.i);
-    }
-  std::sort(hull.begin(), hull.end(),
-            [](const auto& a, const auto& b) { return std::less<const void*>()(a.first, b.first); });
-  for(std::size_t k = 0; k < hull.size(); ++k) {
-    if(k > 0 && hull[k].first == hull[k - 1].first)
-      return false; // a vertex twice on the hull
-    const Face_handle g = hull[k].second;
-    const void* a = &*g->vertex(1);
-    const auto next = std::lower_bound(hull.begin(), hull.end(), a, [](const auto& h, const void* v) {
-      return std::less<const void*>()(h.first, v);
-    });
-    if(next == hull.end() || next->first != a)
-      return false;
-    g->set_neighbor(0, next->second);
-    next->second->set_neighbor(1, g);
-  }
-  if(hull.size() < 3)
-    return false;
-
-  // The duplicates merged into the vertex of their point; every seam vertex must be in a face
-  // again (the others are in their kept faces).
-  std::vector<Vertex_handle> dropped;
-  std::size_t duplicates = 0;
-  for(const auto& m : merged) {
-    dropped.push_back(vertex_of[m[0]]);
-    merge_index_info_of(vertex_of[m[1]], vertex_of[m[0]]); // which holds its block's duplicates
-    ++duplicates;
-  }
-  std::sort(dropped.begin(), dropped.end());
-  std::size_t kept_faces = 0;
-  for(const Block_output& o : out) {
-    duplicates += o.duplicates;
-    kept_faces += o.kept_faces;
-    for(const std::uint32_t i : o.seam_points)
-      if((vertex_of[i]->face() == Face_handle()) != std::binary_search(dropped.begin(), dropped.end(), vertex_of[i]))
-        return false; // a seam vertex in no face, or a dropped one in a face
-  }
-
-  // Spliced into the triangulation, checked, the failing walls flipped.
-  auto& tds = dt.tds();
-  tds.faces().clear(); // the constructor's face of dimension -1
-  tds.set_dimension(2);
-  for(Block_output& o : out) {
-    tds.vertices().merge(o.dt->tds().vertices());
-    tds.faces().merge(o.dt->tds().faces());
-    o.dt.reset();
-  }
-  tds.faces().merge(seam_faces);
-  infinite->set_face(hull.front().second);
-  tds.faces().merge(infinite_faces);
-  for(const Vertex_handle v : dropped)
-    tds.delete_vertex(v);
-  const std::size_t walls_failing = failing.size();
-  std::size_t flips = 0;
-  std::vector<Face_handle> touched;
-  if(!hull_is_convex_and_wound_once(dt) || !lawson_flip(dt, failing, default_max_flips(n), flips, touched, parallel)) {
-    dt.clear();
-    return false;
-  }
-  stats.points_reinserted += n;
-  stats.duplicate_points += duplicates;
-  if(counts != nullptr)
-    *counts = Block_build_counts{region.size(), kept_faces, seam_points, walls, walls_failing};
-  return true;
+  return Block_assembly<DT, PointIterator, Kept>(dt, points, n, scale, order, region, kept_in_block, parallel)
+      .run(stats, counts);
 }
 
 // Builds DT(points[0, n)) into `dt` (no vertex yet) in blocks (see the file's comment):

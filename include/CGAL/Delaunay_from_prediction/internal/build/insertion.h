@@ -105,61 +105,47 @@ public:
   template <class PointAt>
   Vertex_grid(std::size_t n, PointAt point_at)
   {
-    if(n == 0)
-      return;
-    const Box box = bounding_box(n, point_at);
-    set_up(n, box.xmin, box.xmax, box.ymin, box.ymax);
+    if(n != 0)
+      set_up(n, bounding_box(n, point_at));
   }
 
-  // A grid for n points in the box [xmin, xmax] x [ymin, ymax] (points outside it fall in
-  // the border cells).
-  Vertex_grid(std::size_t n, double xmin, double xmax, double ymin, double ymax)
+  // A grid for n points in `box` (points outside it fall in the border cells).
+  Vertex_grid(std::size_t n, const Box& box)
   {
     if(n != 0)
-      set_up(n, xmin, xmax, ymin, ymax);
+      set_up(n, box);
   }
 
   template <class Point>
   void record(const Point& p, Vertex_handle v)
   {
-    std::size_t cx, cy;
-    cell(p, cx, cy);
-    fine_[cy * fine_side_ + cx] = v;
-    coarse_[(cy / 8) * coarse_side_ + cx / 8] = v;
+    const std::size_t cx = fine_.column(CGAL::to_double(p.x())), cy = fine_.row(CGAL::to_double(p.y()));
+    last_in_fine_[cy * fine_.columns() + cx] = v;
+    last_in_coarse_[(cy / 8) * coarse_side_ + cx / 8] = v;
   }
 
   // A vertex inserted near p, or a null handle.
   template <class Point>
   Vertex_handle near(const Point& p) const
   {
-    std::size_t cx, cy;
-    cell(p, cx, cy);
-    const Vertex_handle v = fine_[cy * fine_side_ + cx];
-    return v != Vertex_handle() ? v : coarse_[(cy / 8) * coarse_side_ + cx / 8];
+    const std::size_t cx = fine_.column(CGAL::to_double(p.x())), cy = fine_.row(CGAL::to_double(p.y()));
+    const Vertex_handle v = last_in_fine_[cy * fine_.columns() + cx];
+    return v != Vertex_handle() ? v : last_in_coarse_[(cy / 8) * coarse_side_ + cx / 8];
   }
 
 private:
-  void set_up(std::size_t n, double xmin, double xmax, double ymin, double ymax)
+  void set_up(std::size_t n, const Box& box)
   {
     // Coarse cells are 8 x 8 fine cells.
     coarse_side_ = (std::max)(std::size_t(1), std::size_t(std::sqrt(double(n) / 256)));
-    fine_side_ = 8 * coarse_side_;
-    column_ = Grid_axis(xmin, xmax, fine_side_);
-    row_ = Grid_axis(ymin, ymax, fine_side_);
-    fine_.assign(fine_side_ * fine_side_, Vertex_handle());
-    coarse_.assign(coarse_side_ * coarse_side_, Vertex_handle());
+    fine_ = Cell_grid(box, 8 * coarse_side_, 8 * coarse_side_);
+    last_in_fine_.assign(fine_.cells(), Vertex_handle());
+    last_in_coarse_.assign(coarse_side_ * coarse_side_, Vertex_handle());
   }
 
-  template <class Point>
-  void cell(const Point& p, std::size_t& cx, std::size_t& cy) const
-  {
-    cx = column_(CGAL::to_double(p.x()));
-    cy = row_(CGAL::to_double(p.y()));
-  }
-
-  Grid_axis column_, row_; // robust at any scale (see Grid_axis)
-  std::size_t fine_side_ = 8, coarse_side_ = 1;
-  std::vector<Vertex_handle> fine_, coarse_;
+  Cell_grid fine_;
+  std::size_t coarse_side_ = 1;
+  std::vector<Vertex_handle> last_in_fine_, last_in_coarse_;
 };
 
 // The walk cap of a location from a hint among n points: about log2 n + 8 faces.

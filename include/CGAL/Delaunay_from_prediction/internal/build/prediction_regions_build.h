@@ -201,15 +201,18 @@ Outcome build_by_prediction_regions(DT& dt, PointIterator points, std::size_t n,
   } else if(height > 0) {
     rows = cells_along(cells_wanted);
   }
-  const Grid_axis column_of(box.xmin * scale, box.xmax * scale, columns), row_of(box.ymin * scale, box.ymax * scale, rows);
+  // On coordinates times `scale`, those of the circumdisks below.
+  Box scaled_box;
+  scaled_box.add(box.xmin * scale, box.ymin * scale);
+  scaled_box.add(box.xmax * scale, box.ymax * scale);
+  const Cell_grid grid(scaled_box, columns, rows);
   constexpr std::uint32_t empty = std::uint32_t(-1), mixed = std::uint32_t(-2);
   std::vector<std::uint32_t> owner(columns * rows, empty);
   std::size_t occupied = 0, mixed_cells = 0;
   for(std::size_t b = 0; b < blocks.size(); ++b)
     for(std::size_t k = blocks[b].begin; k < blocks[b].end; ++k) {
       const std::uint32_t i = order[k];
-      std::uint32_t& o = owner[row_of(CGAL::to_double(points[i].y()) * scale) * columns +
-                               column_of(CGAL::to_double(points[i].x()) * scale)];
+      std::uint32_t& o = owner[grid(CGAL::to_double(points[i].x()) * scale, CGAL::to_double(points[i].y()) * scale)];
       if(o == empty) {
         o = std::uint32_t(b);
         ++occupied;
@@ -230,8 +233,8 @@ Outcome build_by_prediction_regions(DT& dt, PointIterator points, std::size_t n,
     const Scaled_disk disk = scaled_circumdisk(p, q, r);
     if(!disk.finite())
       return false;
-    const std::size_t c0 = column_of(disk.x - disk.r), c1 = column_of(disk.x + disk.r);
-    const std::size_t r0 = row_of(disk.y - disk.r), r1 = row_of(disk.y + disk.r);
+    const std::size_t c0 = grid.column(disk.x - disk.r), c1 = grid.column(disk.x + disk.r);
+    const std::size_t r0 = grid.row(disk.y - disk.r), r1 = grid.row(disk.y + disk.r);
     if((c1 - c0 + 1) * (r1 - r0 + 1) > 64)
       return false;
     for(std::size_t row = r0; row <= r1; ++row)

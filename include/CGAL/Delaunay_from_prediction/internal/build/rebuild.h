@@ -241,9 +241,12 @@ void build_with_exact_predicates(DT& dt, PointIterator points, std::size_t n, St
 // compare_xy, before any insertion), throws Invalid_prediction naming both, before `tr` is modified.
 // `build_aside(aside, points, n)`, if given, may build the triangulation aside instead (with
 // vertex info the point index), returning false when it did not; one that lost a point (two at
-// the same point) is built again by the insertion, which names them.
+// the same point) is built again by the insertion, which names them. Without
+// `or_by_insertion`, a triangulation `build_aside` did not build leaves `tr` as it is, and
+// false is returned; otherwise true.
 template <class Triangulation, class BuildAside = std::nullptr_t>
-void rebuild_keeping_vertices(Triangulation& tr, Statistics& stats, BuildAside build_aside = nullptr)
+bool rebuild_keeping_vertices(Triangulation& tr, Statistics& stats, BuildAside build_aside = nullptr,
+                              bool or_by_insertion = true)
 {
   using Gt = typename Triangulation::Geom_traits;
   using Point = typename Triangulation::Point;
@@ -262,7 +265,7 @@ void rebuild_keeping_vertices(Triangulation& tr, Statistics& stats, BuildAside b
   }
   const std::size_t n = vertices.size();
   if(n == 0)
-    return;
+    return true;
 
   auto duplicates = [&](std::size_t i, std::size_t j) {
     std::ostringstream msg;
@@ -301,10 +304,15 @@ void rebuild_keeping_vertices(Triangulation& tr, Statistics& stats, BuildAside b
   } else {
     bool built = false;
     if constexpr(!std::is_same<BuildAside, std::nullptr_t>::value) {
-      built = build_aside(aside, points.begin(), n) && aside.number_of_vertices() == n;
+      const bool ran = build_aside(aside, points.begin(), n);
+      built = ran && aside.number_of_vertices() == n;
+      if(ran && !built) // a point lost: the insertion below names the two at the same point
+        or_by_insertion = true;
       if(!built)
         aside.clear();
     }
+    if(!built && !or_by_insertion)
+      return false;
     if(!built)
       insert_by_index(aside, points.begin(), indices, [&](std::size_t i, auto v, bool is_new) {
         if(is_new) {
@@ -317,6 +325,7 @@ void rebuild_keeping_vertices(Triangulation& tr, Statistics& stats, BuildAside b
       return v == aside.infinite_vertex() ? tr.infinite_vertex() : vertices[v->info()];
     }, built); // built aside by build_aside: on several threads
   }
+  return true;
 }
 
 } // namespace internal

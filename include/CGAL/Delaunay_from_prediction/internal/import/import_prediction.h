@@ -170,6 +170,102 @@ private:
   std::vector<std::uint64_t> spilled_; // one bit per vertex: has it spilled?
 };
 
+// When the import stops early, because what would follow it (the local repair, the flips)
+// costs more than a rebuild. Each rule looks at a stretch of consecutive faces, all of them
+// (Prediction_importer::build()) or one chunk's share (build_in_chunks()), after `done` of
+// them, and extrapolates what it has seen to all the faces; the importer runs the rules every
+// 4096 faces.
+struct Import_limits
+{
+  // A stretch of faces, with its own terms of the rule for holes.
+  struct Stretch
+  {
+    std::size_t faces;    // in the stretch
+    std::size_t max_open; // open half-edges past which it stops at once
+    std::size_t frontier; // open half-edges of its frontiers, not counted as holes
+  };
+
+  Import_limits(std::size_t n, std::size_t all_faces, std::size_t max_failing_edges, bool tolerant_import,
+                bool faces_sorted_by_band)
+      : faces(all_faces), root(std::size_t(std::sqrt(double(n)))), max_hole_halfedges(n / 4 + 64),
+        max_open(max_hole_halfedges + 32 * root), max_failing(max_failing_edges), max_dropped(all_faces / 64 + 64),
+        tolerant(tolerant_import), faces_sorted(faces_sorted_by_band)
+  {}
+
+  // All the faces, with one frontier.
+  Stretch all_faces() const { return Stretch{faces, max_open, 8 * root}; }
+  // A chunk of `size` faces: its share of the fixed limit, and two frontiers (with the chunks
+  // before and after it).
+  Stretch chunk(std::size_t size) const
+  {
+    return Stretch{size, max_hole_halfedges * size / faces + 64 * root, 16 * root};
+  }
+
+  // Tolerant import: the half-edges still open are the moving frontier when the faces come
+  // sorted (spatial_order.h), plus the boundaries of holes; past n/4 of those the local
+  // repair would cost more than a rebuild (see delaunay_from_prediction), so the import
+  // stops as soon as it sees that many (with 32 sqrt(n) for the frontier), or, from a 32nd
+  // of the faces on, as soon as the hole boundaries seen so far, extrapolated to all the
+  // faces, exceed 1.25 times that. Measured at 1e6 points with 1% of the faces deleted, the
+  // open half-edges grow linearly from a frontier of about sqrt(n) (8 sqrt(n) is
+  // subtracted); with 10% deleted the import stops after about 5% of the faces, where the
+  // fixed limit alone lets it run through half of them.
+  Outcome too_many_holes(const Stretch& s, std::size_t done, std::size_t open) const
+  {
+    const bool stop = open > s.max_open ||
+                      (32 * done >= s.faces && open > s.frontier &&
+                       double(open - s.frontier) * double(faces) > 1.25 * double(max_open) * double(done));
+    return stop ? Outcome::too_many_holes : Outcome::ok;
+  }
+
+  // The same extrapolation, from an eighth of the faces on, for the edges failing the
+  // in-circle test against `max_failing` (the caller's flip budget over the flips a
+  // failing edge costs): a prediction that would exhaust the flips is rebuilt after an
+  // eighth of the import instead of after all of it and the flips (bench_d_cross: the rho
+  // model's predictions cost 1.2 to 1.4 times the rebuild that way at 1e5 points).
+  Outcome too_many_failing_edges(const Stretch& s, std::size_t done, std::size_t failing) const
+  {
+    const bool stop = 8 * done >= s.faces && double(failing) * double(faces) > double(max_failing) * double(done);
+    return stop ? Outcome::too_many_failing_edges : Outcome::ok;
+  }
+
+  // The same extrapolation for the faces left out: with 1% of the points of 1e6
+  // relabelled (faces crossing others) it stops after a 32nd of the faces, where the
+  // fixed limit alone is passed near the end, 0.2 s in (the call 1.46 times CGAL's build).
+  Outcome too_many_overlapping_faces(const Stretch& s, std::size_t done, std::size_t dropped) const
+  {
+    const bool stop = 32 * done >= s.faces &&
+                      double(dropped) * double(faces) > 1.25 * double(max_dropped) * double(done);
+    return stop ? Outcome::too_many_overlapping_faces : Outcome::ok;
+  }
+
+  // The rules that apply, in turn, after `done` faces of `s`: the first one that stops.
+  Outcome check(const Stretch& s, std::size_t done, std::size_t open, std::size_t failing, std::size_t dropped) const
+  {
+    Outcome why = Outcome::ok;
+    if(tolerant && faces_sorted)
+      why = too_many_holes(s, done, open);
+    if(why == Outcome::ok)
+      why = too_many_failing_edges(s, done, failing);
+    if(why == Outcome::ok && tolerant)
+      why = too_many_overlapping_faces(s, done, dropped);
+    return why;
+  }
+
+  std::size_t faces; // all of them
+  std::size_t root;  // sqrt(n)
+  // Open half-edges on hole boundaries past which the local repair costs more than a rebuild.
+  std::size_t max_hole_halfedges;
+  std::size_t max_open; // that, with the frontier of all the faces
+  std::size_t max_failing; // failing edges past which the flips cost more than a rebuild
+  // Faces the tolerant import may leave out before it gives up: each one usually costs the
+  // local repair a carved star, and past 1.5% of the faces (measured: index triples of a
+  // triangulation whose points then moved by 0.1 spacing, 5% of the faces inverted) the
+  // repair costs more than a rebuild; stopping early saves the rest of the import.
+  std::size_t max_dropped;
+  bool tolerant, faces_sorted; // the rule for holes needs faces in band order (spatial_order.h)
+};
+
 template <class Triangulation>
 class Prediction_importer
 {
@@ -220,6 +316,40 @@ class Prediction_importer
     ++edges_tested;
     if(!is_locally_delaunay(gt, opposite, tail, head, g->vertex(j)->point()))
       failing.emplace_back(f, i);
+  }
+
+  // Orients the face with vertices v counterclockwise, swapping v[1] and v[2] if needed; false
+  // if it is flat.
+  template <class Orientation_2, class PointIterator>
+  static bool orient_face(Orientation_2& orientation, PointIterator points, std::uint32_t v[3])
+  {
+    const Orientation o = orientation(points[v[0]], points[v[1]], points[v[2]]);
+    if(o == NEGATIVE)
+      std::swap(v[1], v[2]);
+    return o != COLLINEAR;
+  }
+
+  // The per-face step of build() and build_in_chunks(): offers the half-edges of face f
+  // (vertices v, counterclockwise; half-edge i runs from v[ccw(i)] to v[cw(i)], the face on
+  // its left) to `open`, and links and tests each one whose twin was waiting (in `faces`).
+  // Returns 3, or the first half-edge that met one on the same side of its edge (taken from
+  // `open`: `twin`), those before it linked and tested.
+  template <class PointIterator, class Faces>
+  static int pair_face(const typename Triangulation::Geom_traits& gt, PointIterator points, Faces& faces,
+                       Open_halfedges& open, Face_handle f, const std::uint32_t v[3], std::uintptr_t& twin,
+                       std::size_t& edges_tested, std::vector<std::pair<Face_handle, int>>& failing)
+  {
+    for(int i = 0; i < 3; ++i) {
+      const std::uint32_t tail = v[ccw(i)], head = v[cw(i)];
+      const Pairing pairing = offer_halfedge(open, f, i, tail, head, twin);
+      if(pairing == Pairing::opened)
+        continue;
+      if(pairing == Pairing::same_side)
+        return i;
+      link_and_test(gt, f, i, faces.iterator_to(*reinterpret_cast<Face*>(twin & ~flag_bits)), int(twin & index_bits),
+                    points[v[i]], points[tail], points[head], edges_tested, failing);
+    }
+    return 3;
   }
 
 public:
@@ -289,6 +419,16 @@ private:
       : tr_(tr), n_(n), number_of_faces_(number_of_faces), out_(out), tolerant_(tolerant)
   {}
 
+  Import_limits import_limits(const Spatial_order& order) const
+  {
+    return Import_limits(n_, number_of_faces_, max_failing_, tolerant_, order.faces_sorted());
+  }
+
+  Face_handle face_of(std::uintptr_t code) const
+  {
+    return tr_.tds().faces().iterator_to(*reinterpret_cast<Face*>(code & ~flag_bits));
+  }
+
   // The streaming pass, then the hull.
   template <class PointIterator>
   void build(PointIterator points, const std::vector<std::uint32_t>& triples,
@@ -303,61 +443,25 @@ private:
     tds.faces().reserve(number_of_faces_ + 64);
     std::vector<Vertex_handle> vertex_of(n_);
     Open_halfedges open(n_);
+    const Import_limits limits = import_limits(order);
+    const Import_limits::Stretch all_faces = limits.all_faces();
 
     const std::uint32_t* t = triples.data();
-    bool f_dropped = false;
-    // Tolerant import: the half-edges still open are the moving frontier when the faces come
-    // sorted (spatial_order.h), plus the boundaries of holes; past n/4 of those the local
-    // repair would cost more than a rebuild (see delaunay_from_prediction), so the import
-    // stops as soon as it sees that many (with 32 sqrt(n) for the frontier), or, from a 32nd
-    // of the faces on, as soon as the hole boundaries seen so far, extrapolated to all the
-    // faces, exceed 1.25 times that. Measured at 1e6 points with 1% of the faces deleted, the
-    // open half-edges grow linearly from a frontier of about sqrt(n) (8 sqrt(n) is
-    // subtracted); with 10% deleted the import stops after about 5% of the faces, where the
-    // fixed limit alone lets it run through half of them.
-    const std::size_t root = std::size_t(std::sqrt(double(n_)));
-    const std::size_t max_open = n_ / 4 + 64 + 32 * root;
     for(std::size_t k = 0; k < number_of_faces_; ++k, t += 3) {
-      if(tolerant_ && order.faces_sorted() && (k & 4095) == 0 &&
-         (open.size() > max_open ||
-          (32 * k >= number_of_faces_ && open.size() > 8 * root &&
-           double(open.size() - 8 * root) * double(number_of_faces_) > 1.25 * double(max_open) * double(k)))) {
-        out_.failure = Outcome::too_many_holes;
-        return;
-      }
-      // The same extrapolation, from an eighth of the faces on, for the edges failing the
-      // in-circle test against `max_failing` (the caller's flip budget over the flips a
-      // failing edge costs): a prediction that would exhaust the flips is rebuilt after an
-      // eighth of the import instead of after all of it and the flips (bench_d_cross: the rho
-      // model's predictions cost 1.2 to 1.4 times the rebuild that way at 1e5 points).
-      if((k & 4095) == 0 && 8 * k >= number_of_faces_ &&
-         double(out_.not_locally_delaunay.size()) * double(number_of_faces_) > double(max_failing_) * double(k)) {
-        out_.failure = Outcome::too_many_failing_edges;
-        return;
-      }
-      // The same extrapolation for the faces left out: with 1% of the points of 1e6
-      // relabelled (faces crossing others) it stops after a 32nd of the faces, where the
-      // fixed limit alone is passed near the end, 0.2 s in (the call 1.46 times CGAL's build).
-      if(tolerant_ && (k & 4095) == 0 && 32 * k >= number_of_faces_ &&
-         double(out_.faces_dropped) * double(number_of_faces_) > 1.25 * double(max_dropped()) * double(k)) {
-        out_.failure = Outcome::too_many_overlapping_faces;
-        return;
-      }
-      std::uint32_t v[3] = {t[0], t[1], t[2]};
-      const Point& p0 = points[v[0]];
-      Orientation o = orientation(p0, points[v[1]], points[v[2]]);
-      if(o == COLLINEAR) {
-        if(tolerant_ && ++out_.faces_dropped <= max_dropped())
-          continue;
-        if(tolerant_) {
-          out_.failure = Outcome::too_many_degenerate_faces;
+      if((k & 4095) == 0) {
+        const Outcome why = limits.check(all_faces, k, open.size(), out_.not_locally_delaunay.size(), out_.faces_dropped);
+        if(why != Outcome::ok) {
+          out_.failure = why;
           return;
         }
-        out_.failure = Outcome::degenerate_face;
+      }
+      std::uint32_t v[3] = {t[0], t[1], t[2]};
+      if(!orient_face(orientation, points, v)) {
+        if(tolerant_ && ++out_.faces_dropped <= limits.max_dropped)
+          continue;
+        out_.failure = tolerant_ ? Outcome::too_many_degenerate_faces : Outcome::degenerate_face;
         return;
       }
-      if(o == NEGATIVE)
-        std::swap(v[1], v[2]);
       Vertex_handle w[3];
       bool created[3];
       for(int i = 0; i < 3; ++i) {
@@ -376,40 +480,28 @@ private:
         if(created[i])
           w[i]->set_face(f);
 
-      // Half-edge i runs from v[ccw(i)] to v[cw(i)]; the face is on its left.
       const std::size_t tests_before = out_.not_locally_delaunay.size();
-      for(int i = 0; i < 3; ++i) {
-        const std::uint32_t tail = v[ccw(i)], head = v[cw(i)];
-        std::uintptr_t twin = 0;
-        const Pairing pairing = offer_halfedge(open, f, i, tail, head, twin);
-        if(pairing == Pairing::opened)
-          continue;
-        if(pairing == Pairing::same_side) {
-          if(!tolerant_) {
-            out_.failure = Outcome::overlapping_faces;
-            return;
-          }
-          // Leave this face out: reopen the twin just taken, undo the half-edges done.
-          std::uintptr_t ignored = 0;
-          open.take_or_open((std::min)(tail, head), (std::max)(tail, head), twin, ignored);
-          drop_face(f, v, i, created, w, open, tests_before);
-          f_dropped = true;
-          if(out_.faces_dropped > max_dropped()) {
-            out_.failure = Outcome::too_many_overlapping_faces;
-            return;
-          }
-          break;
-        }
-        link_and_test(gt, f, i, tds.faces().iterator_to(*reinterpret_cast<Face*>(twin & ~flag_bits)),
-                      int(twin & index_bits), points[v[i]], points[tail], points[head], out_.edges_tested,
-                      out_.not_locally_delaunay);
+      std::uintptr_t twin = 0;
+      const int conflict =
+          pair_face(gt, points, tds.faces(), open, f, v, twin, out_.edges_tested, out_.not_locally_delaunay);
+      if(conflict == 3)
+        continue;
+      if(!tolerant_) {
+        out_.failure = Outcome::overlapping_faces;
+        return;
       }
-      if(f_dropped) {
-        f_dropped = false;
-        for(int i = 0; i < 3; ++i)
-          if(created[i])
-            vertex_of[v[i]] = Vertex_handle();
+      // Leave this face out: reopen the twin just taken, undo the half-edges done.
+      const std::uint32_t tail = v[ccw(conflict)], head = v[cw(conflict)];
+      std::uintptr_t ignored = 0;
+      open.take_or_open((std::min)(tail, head), (std::max)(tail, head), twin, ignored);
+      drop_face(f, v, conflict, created, w, open, tests_before);
+      if(out_.faces_dropped > limits.max_dropped) {
+        out_.failure = Outcome::too_many_overlapping_faces;
+        return;
       }
+      for(int i = 0; i < 3; ++i)
+        if(created[i])
+          vertex_of[v[i]] = Vertex_handle();
     }
 
     std::vector<Boundary_halfedge> boundary;
@@ -433,7 +525,6 @@ private:
   void finish(PointIterator points, const std::vector<Vertex_handle>& vertex_of, const Spatial_order& order,
               std::vector<Boundary_halfedge>& boundary)
   {
-    auto& tds = tr_.tds();
     for(std::uint32_t v = 0; v < n_; ++v)
       if(vertex_of[v] == Vertex_handle())
         out_.unused_points.push_back(order.old_index(v));
@@ -457,29 +548,59 @@ private:
     out_.needs_repair = true;
     out_.open_halfedges.reserve(boundary.size());
     for(const Boundary_halfedge& h : boundary)
-      out_.open_halfedges.emplace_back(tds.faces().iterator_to(*reinterpret_cast<Face*>(h.code & ~flag_bits)),
-                                       int(h.code & index_bits));
+      out_.open_halfedges.emplace_back(face_of(h.code), int(h.code & index_bits));
   }
 
   // Faces per chunk of build_in_chunks(), at least: small, so that even small inputs (and the
   // tests) cross several chunk boundaries.
   static constexpr std::size_t min_chunk = 32;
 
-  // build() in parallel, on chunks of consecutive faces (a 16th of them, at least
-  // min_chunk, so at most 16 chunks). Three passes over the chunks on TBB's threads:
-  //  1. each chunk marks the vertices it uses in a bitmap of its own;
+  // build_in_chunks()'s chunks of consecutive faces: a 16th of them, at least min_chunk, so
+  // at most 16 chunks.
+  struct Chunks
+  {
+    explicit Chunks(std::size_t all_faces)
+        : faces(all_faces), size((std::max)(min_chunk, (all_faces + 15) / 16)), count((all_faces + size - 1) / size)
+    {}
+    // body(c, first, last) for each chunk c, of faces [first, last), on TBB's threads.
+    template <class Body>
+    void for_each(const Body& body) const
+    {
+      for_each_block(true, count, [&](std::size_t c) { body(c, c * size, (std::min)(faces, (c + 1) * size)); });
+    }
+    std::size_t faces, size, count;
+  };
+
+  // What a chunk of build_in_chunks() makes: its own containers, since CGAL's are not
+  // thread-safe, its failing edges and the half-edges it leaves open.
+  struct Chunk
+  {
+    typename Triangulation::Triangulation_data_structure::Vertex_range vertices;
+    typename Triangulation::Triangulation_data_structure::Face_range faces;
+    std::vector<std::pair<Face_handle, int>> not_locally_delaunay;
+    std::vector<Boundary_halfedge> open; // tail = smaller endpoint, head = larger
+    std::size_t edges_tested = 0;
+  };
+
+  // Why the chunks stop: not, a face the tolerant import would leave out, or an Outcome.
+  static constexpr int go_on = -1, face_left_out = -2;
+
+  // build() in parallel, on chunks of consecutive faces (Chunks). Three passes over the
+  // chunks on TBB's threads:
+  //  1. each chunk marks the vertices it uses in a bitmap of its own (mark_chunk_vertices());
   //  2. each chunk creates, in index order, the vertices it uses and no earlier chunk does,
-  //     in a Compact_container of its own (CGAL's containers are not thread-safe);
+  //     in a Compact_container of its own (create_chunk_vertices());
   //  3. each chunk orients its faces and creates them in a container of its own, pairs their
   //     half-edges through its own Open_halfedges, links and tests the pairs; it writes only
-  //     its own faces and vertices.
+  //     its own faces and vertices (import_chunk()).
   // Then the half-edges each chunk left open (its frontiers with the chunks before and after,
   // about sqrt(n) each for faces in band order, and the hull) are paired sequentially in chunk
-  // order, and the containers spliced, in chunk order, into the triangulation's
+  // order (pair_seams()), and the containers spliced, in chunk order, into the triangulation's
   // (Compact_container::merge(), constant time per block), so that faces come in the order
   // build() creates them (vertices in chunk order, by index within a chunk); the seams are
-  // linked and tested last. The pairing is exact, so the faces, their links and the failing
-  // edges are those of build(); only the order of the failing edges differs.
+  // linked and tested last (splice_and_link()). The pairing is exact, so the faces, their
+  // links and the failing edges are those of build(); only the order of the failing edges
+  // differs.
   //
   // A face the tolerant import would leave out (flat, or on the same side of an edge as
   // another) stops every chunk and false is returned, the triangulation untouched: build()
@@ -488,124 +609,23 @@ private:
   template <class PointIterator>
   bool build_in_chunks(PointIterator points, const std::vector<std::uint32_t>& triples, const Spatial_order& order)
   {
-    using Vertex_range = typename Triangulation::Triangulation_data_structure::Vertex_range;
-    using Face_range = typename Triangulation::Triangulation_data_structure::Face_range;
-    auto& tds = tr_.tds();
-    const auto& gt = tr_.geom_traits();
-    const std::size_t faces = number_of_faces_;
-    const std::size_t chunk_size = (std::max)(min_chunk, (faces + 15) / 16);
-    const std::size_t chunks = (faces + chunk_size - 1) / chunk_size;
-    auto for_each_chunk = [&](const auto& body) {
-      for_each_block(true, chunks, [&](std::size_t c) {
-        body(c, c * chunk_size, (std::min)(faces, (c + 1) * chunk_size));
-      });
-    };
+    const Chunks chunks(number_of_faces_);
+    std::vector<Chunk> chunk(chunks.count);
 
-    // 1. The vertices each chunk uses.
-    const std::size_t words = (n_ + 63) / 64;
-    std::vector<std::uint64_t> uses(chunks * words, 0);
-    for_each_chunk([&](std::size_t c, std::size_t first, std::size_t last) {
-      std::uint64_t* mine = uses.data() + c * words;
-      for(const std::uint32_t *t = triples.data() + 3 * first, *end = triples.data() + 3 * last; t != end; ++t)
-        mine[*t >> 6] |= std::uint64_t(1) << (*t & 63);
-    });
-
-    // 2. The vertices, each made by the first chunk that uses it (`owner`).
+    // 1 and 2. The vertices, each made by the first chunk that uses it (`owner`).
+    std::vector<std::uint64_t> uses = mark_chunk_vertices(triples, chunks);
     std::vector<Vertex_handle> vertex_of(n_);
-    std::vector<Vertex_range> vertices(chunks);
     std::vector<std::uint8_t> owner(n_); // chunks <= 16
-    for_each_chunk([&](std::size_t c, std::size_t, std::size_t) {
-      for(std::size_t w = 0; w < words; ++w) {
-        std::uint64_t own = uses[c * words + w];
-        for(std::size_t earlier = 0; own != 0 && earlier < c; ++earlier)
-          own &= ~uses[earlier * words + w];
-        for(std::size_t bit = 0; own != 0; ++bit, own >>= 1) {
-          if((own & 1) == 0)
-            continue;
-          const std::size_t v = 64 * w + bit;
-          const Vertex_handle h = vertices[c].emplace();
-          h->set_point(points[v]);
-          set_index_info(h, order.old_index(std::uint32_t(v)));
-          vertex_of[v] = h;
-          owner[v] = std::uint8_t(c);
-        }
-      }
-    });
+    create_chunk_vertices(points, order, chunks, uses, chunk, vertex_of, owner);
     std::vector<std::uint64_t>().swap(uses);
 
     // 3. The faces, their pairs and tests.
-    constexpr int go_on = -1, face_left_out = -2; // why the chunks stop: not, or an Outcome
+    const Import_limits limits = import_limits(order);
     std::atomic<int> stop{go_on};
-    struct Chunk
-    {
-      std::vector<std::pair<Face_handle, int>> not_locally_delaunay;
-      std::vector<Boundary_halfedge> open; // tail = smaller endpoint, head = larger
-      std::size_t edges_tested = 0;
-    };
-    std::vector<Chunk> chunk(chunks);
-    std::vector<Face_range> face_range(chunks);
-    const std::size_t root = std::size_t(std::sqrt(double(n_)));
-    const std::size_t max_open = n_ / 4 + 64 + 32 * root;
-    for_each_chunk([&](std::size_t c, std::size_t first, std::size_t last) {
-      Chunk& out = chunk[c];
-      Face_range& created = face_range[c];
-      created.reserve(last - first);
-      Open_halfedges open(n_, true);
-      auto orientation = gt.orientation_2_object();
-      for(std::size_t k = first; k < last; ++k) {
-        const std::size_t done = k - first;
-        if((done & 1023) == 0 && stop.load(std::memory_order_relaxed) != go_on)
-          return;
-        // The tolerant import's stop for too many holes (see build()), on this chunk's share
-        // of the faces; a chunk has two frontiers.
-        if(tolerant_ && order.faces_sorted() && (done & 4095) == 0 &&
-           (open.size() > (n_ / 4 + 64) * (last - first) / faces + 64 * root ||
-            (32 * done >= last - first && open.size() > 16 * root &&
-             double(open.size() - 16 * root) * double(faces) > 1.25 * double(max_open) * double(done)))) {
-          stop.store(int(Outcome::too_many_holes));
-          return;
-        }
-        // The stop for too many failing edges (see build()), on this chunk's share.
-        if((done & 4095) == 0 && 8 * done >= last - first &&
-           double(out.not_locally_delaunay.size()) * double(faces) > double(max_failing_) * double(done)) {
-          stop.store(int(Outcome::too_many_failing_edges));
-          return;
-        }
-        const std::uint32_t* t = triples.data() + 3 * k;
-        std::uint32_t v[3] = {t[0], t[1], t[2]};
-        const Orientation o = orientation(points[v[0]], points[v[1]], points[v[2]]);
-        if(o == COLLINEAR) {
-          stop.store(tolerant_ ? face_left_out : int(Outcome::degenerate_face));
-          return;
-        }
-        if(o == NEGATIVE)
-          std::swap(v[1], v[2]);
-        const Face_handle f = created.emplace(vertex_of[v[0]], vertex_of[v[1]], vertex_of[v[2]]);
-        // A vertex's first face in the chunk that made it becomes its face().
-        for(int i = 0; i < 3; ++i)
-          if(owner[v[i]] == c && vertex_of[v[i]]->face() == Face_handle())
-            vertex_of[v[i]]->set_face(f);
-        for(int i = 0; i < 3; ++i) {
-          const std::uint32_t tail = v[ccw(i)], head = v[cw(i)];
-          std::uintptr_t twin = 0;
-          const Pairing pairing = offer_halfedge(open, f, i, tail, head, twin);
-          if(pairing == Pairing::opened)
-            continue;
-          if(pairing == Pairing::same_side) {
-            stop.store(tolerant_ ? face_left_out : int(Outcome::overlapping_faces));
-            return;
-          }
-          link_and_test(gt, f, i, created.iterator_to(*reinterpret_cast<Face*>(twin & ~flag_bits)),
-                        int(twin & index_bits), points[v[i]], points[tail], points[head], out.edges_tested,
-                        out.not_locally_delaunay);
-        }
-      }
-      out.open.reserve(open.size());
-      open.for_each([&](std::uint32_t smaller, std::uint32_t larger, std::uintptr_t code) {
-        out.open.push_back(Boundary_halfedge{smaller, larger, code});
-      });
+    chunks.for_each([&](std::size_t c, std::size_t first, std::size_t last) {
+      import_chunk(points, triples, limits, c, first, last, vertex_of, owner, chunk[c], stop);
     });
-    int why = stop.load();
+    const int why = stop.load();
     if(why == face_left_out)
       return false; // the chunks' containers are released: build() starts again
     if(why != go_on) {
@@ -621,8 +641,123 @@ private:
     Hash_map<std::uint64_t, std::uintptr_t> waiting(2 * seams + 2);
     std::vector<std::pair<std::uintptr_t, std::uintptr_t>> seam_pairs; // (half-edge, twin) codes
     seam_pairs.reserve(seams / 2);
-    std::vector<std::size_t> pairs_end(chunks); // chunk c's pairs end there
-    for(std::size_t c = 0; c < chunks; ++c) {
+    std::vector<std::size_t> pairs_end(chunks.count); // chunk c's pairs end there
+    if(!pair_seams(chunk, waiting, seam_pairs, pairs_end)) {
+      if(tolerant_)
+        return false; // build() starts again
+      out_.failure = Outcome::overlapping_faces;
+      return true;
+    }
+
+    splice_and_link(chunk, seam_pairs, pairs_end);
+    std::vector<Boundary_halfedge> boundary;
+    boundary.reserve(waiting.size());
+    waiting.for_each([&](std::uint64_t edge, std::uintptr_t code) {
+      boundary.push_back(boundary_halfedge(std::uint32_t(edge >> 32), std::uint32_t(edge), code));
+    });
+    finish(points, vertex_of, order, boundary);
+    return true;
+  }
+
+  // Stage 1 of build_in_chunks(): the vertices each chunk uses, a bitmap of n bits per chunk.
+  std::vector<std::uint64_t> mark_chunk_vertices(const std::vector<std::uint32_t>& triples, const Chunks& chunks) const
+  {
+    const std::size_t words = (n_ + 63) / 64;
+    std::vector<std::uint64_t> uses(chunks.count * words, 0);
+    chunks.for_each([&](std::size_t c, std::size_t first, std::size_t last) {
+      std::uint64_t* mine = uses.data() + c * words;
+      for(const std::uint32_t *t = triples.data() + 3 * first, *end = triples.data() + 3 * last; t != end; ++t)
+        mine[*t >> 6] |= std::uint64_t(1) << (*t & 63);
+    });
+    return uses;
+  }
+
+  // Stage 2 of build_in_chunks(): each chunk creates, in index order, the vertices it uses
+  // (`uses`, from mark_chunk_vertices()) and no earlier chunk does, and is their `owner`.
+  template <class PointIterator>
+  void create_chunk_vertices(PointIterator points, const Spatial_order& order, const Chunks& chunks,
+                             const std::vector<std::uint64_t>& uses, std::vector<Chunk>& chunk,
+                             std::vector<Vertex_handle>& vertex_of, std::vector<std::uint8_t>& owner) const
+  {
+    const std::size_t words = (n_ + 63) / 64;
+    chunks.for_each([&](std::size_t c, std::size_t, std::size_t) {
+      for(std::size_t w = 0; w < words; ++w) {
+        std::uint64_t own = uses[c * words + w];
+        for(std::size_t earlier = 0; own != 0 && earlier < c; ++earlier)
+          own &= ~uses[earlier * words + w];
+        for(std::size_t bit = 0; own != 0; ++bit, own >>= 1) {
+          if((own & 1) == 0)
+            continue;
+          const std::size_t v = 64 * w + bit;
+          const Vertex_handle h = chunk[c].vertices.emplace();
+          h->set_point(points[v]);
+          set_index_info(h, order.old_index(std::uint32_t(v)));
+          vertex_of[v] = h;
+          owner[v] = std::uint8_t(c);
+        }
+      }
+    });
+  }
+
+  // Stage 3 of build_in_chunks(), for chunk c, of faces [first, last): the faces oriented and
+  // created in the chunk's container, their half-edges paired through an Open_halfedges of
+  // its own, the pairs linked and tested. At a face the tolerant import would leave out, or
+  // when a stop rule says so, it sets `stop`, which every chunk then obeys.
+  template <class PointIterator>
+  void import_chunk(PointIterator points, const std::vector<std::uint32_t>& triples, const Import_limits& limits,
+                    std::size_t c, std::size_t first, std::size_t last, const std::vector<Vertex_handle>& vertex_of,
+                    const std::vector<std::uint8_t>& owner, Chunk& out, std::atomic<int>& stop) const
+  {
+    const auto& gt = tr_.geom_traits();
+    auto orientation = gt.orientation_2_object();
+    auto& created = out.faces;
+    created.reserve(last - first);
+    Open_halfedges open(n_, true);
+    const Import_limits::Stretch share = limits.chunk(last - first);
+    for(std::size_t k = first; k < last; ++k) {
+      const std::size_t done = k - first;
+      if((done & 1023) == 0 && stop.load(std::memory_order_relaxed) != go_on)
+        return;
+      // The stop rules on this chunk's share of the faces; a chunk leaves no face out (it
+      // stops instead), hence none dropped.
+      if((done & 4095) == 0) {
+        const Outcome why = limits.check(share, done, open.size(), out.not_locally_delaunay.size(), 0);
+        if(why != Outcome::ok) {
+          stop.store(int(why));
+          return;
+        }
+      }
+      const std::uint32_t* t = triples.data() + 3 * k;
+      std::uint32_t v[3] = {t[0], t[1], t[2]};
+      if(!orient_face(orientation, points, v)) {
+        stop.store(tolerant_ ? face_left_out : int(Outcome::degenerate_face));
+        return;
+      }
+      const Face_handle f = created.emplace(vertex_of[v[0]], vertex_of[v[1]], vertex_of[v[2]]);
+      // A vertex's first face in the chunk that made it becomes its face().
+      for(int i = 0; i < 3; ++i)
+        if(owner[v[i]] == c && vertex_of[v[i]]->face() == Face_handle())
+          vertex_of[v[i]]->set_face(f);
+      std::uintptr_t twin = 0;
+      if(pair_face(gt, points, created, open, f, v, twin, out.edges_tested, out.not_locally_delaunay) != 3) {
+        stop.store(tolerant_ ? face_left_out : int(Outcome::overlapping_faces));
+        return;
+      }
+    }
+    out.open.reserve(open.size());
+    open.for_each([&](std::uint32_t smaller, std::uint32_t larger, std::uintptr_t code) {
+      out.open.push_back(Boundary_halfedge{smaller, larger, code});
+    });
+  }
+
+  // The half-edges the chunks left open, paired in chunk order through `waiting` (those left
+  // there are the boundary): the (half-edge, twin) codes go to `seam_pairs`, chunk c's ending
+  // at pairs_end[c]. False at a pair on the same side of its edge.
+  bool pair_seams(const std::vector<Chunk>& chunk, Hash_map<std::uint64_t, std::uintptr_t>& waiting,
+                  std::vector<std::pair<std::uintptr_t, std::uintptr_t>>& seam_pairs,
+                  std::vector<std::size_t>& pairs_end) const
+  {
+    for(std::size_t c = 0; c < chunk.size(); ++c) {
       for(const Boundary_halfedge& h : chunk[c].open) {
         const std::uint64_t edge = std::uint64_t(h.tail) << 32 | h.head;
         std::uintptr_t twin = 0;
@@ -630,29 +765,31 @@ private:
           waiting.insert(edge, h.code);
           continue;
         }
-        if(((twin ^ h.code) & tail_is_smaller_bit) == 0) {
-          if(tolerant_)
-            return false; // build() starts again
-          out_.failure = Outcome::overlapping_faces;
-          return true;
-        }
+        if(((twin ^ h.code) & tail_is_smaller_bit) == 0)
+          return false;
         seam_pairs.emplace_back(h.code, twin);
       }
       pairs_end[c] = seam_pairs.size();
     }
+    return true;
+  }
 
-    // The containers spliced, then the seams linked and tested, in the same order.
+  // The chunks' containers spliced, in chunk order, into the triangulation's; then their
+  // failing edges, followed by those of the seams paired after them, linked and tested in
+  // the same order.
+  void splice_and_link(std::vector<Chunk>& chunk, const std::vector<std::pair<std::uintptr_t, std::uintptr_t>>& seam_pairs,
+                       const std::vector<std::size_t>& pairs_end)
+  {
+    auto& tds = tr_.tds();
+    const auto& gt = tr_.geom_traits();
     tds.faces().clear(); // the constructor's face of dimension -1
     tds.set_dimension(2);
-    for(std::size_t c = 0; c < chunks; ++c) {
-      out_.vertices_used += vertices[c].size();
-      tds.vertices().merge(vertices[c]);
-      tds.faces().merge(face_range[c]);
+    for(Chunk& c : chunk) {
+      out_.vertices_used += c.vertices.size();
+      tds.vertices().merge(c.vertices);
+      tds.faces().merge(c.faces);
     }
-    auto face_of = [&](std::uintptr_t code) {
-      return tds.faces().iterator_to(*reinterpret_cast<Face*>(code & ~flag_bits));
-    };
-    for(std::size_t c = 0, k = 0; c < chunks; ++c) {
+    for(std::size_t c = 0, k = 0; c < chunk.size(); ++c) {
       out_.edges_tested += chunk[c].edges_tested;
       out_.not_locally_delaunay.insert(out_.not_locally_delaunay.end(), chunk[c].not_locally_delaunay.begin(),
                                        chunk[c].not_locally_delaunay.end());
@@ -664,13 +801,6 @@ private:
                       out_.edges_tested, out_.not_locally_delaunay);
       }
     }
-    std::vector<Boundary_halfedge> boundary;
-    boundary.reserve(waiting.size());
-    waiting.for_each([&](std::uint64_t edge, std::uintptr_t code) {
-      boundary.push_back(boundary_halfedge(std::uint32_t(edge >> 32), std::uint32_t(edge), code));
-    });
-    finish(points, vertex_of, order, boundary);
-    return true;
   }
 
   // Leaves face f (vertices v, vertex handles w, `created` those it created) out of the
@@ -726,39 +856,131 @@ private:
   template <class PointIterator>
   void fill_small_holes(PointIterator points, std::vector<Boundary_halfedge>& halfedges)
   {
-    constexpr std::size_t max_fill = 32;
-    // Turning around a vertex through more linked faces than this (a vertex's degree is
-    // about 6) means faces winding around it: left to carve_repair.h.
-    constexpr std::size_t longest_turn = 64;
     const std::size_t m = halfedges.size();
-    const std::size_t no_successor = m;
+    std::vector<char> done(m, 0);
+    Hole_plan plan;
+    plan_hole_fills(points, halfedges, done, plan);
+    std::vector<char>& closed_by_fill = done; // reused: every entry is 1 after the planning
+    std::fill(closed_by_fill.begin(), closed_by_fill.end(), 0);
+    fill_planned_holes(points, halfedges, plan, closed_by_fill);
+    std::sort(out_.filled_faces.begin(), out_.filled_faces.end());
+    std::size_t left = 0;
+    for(std::size_t k = 0; k < m; ++k)
+      if(!closed_by_fill[k])
+        halfedges[left++] = halfedges[k];
+    halfedges.resize(left);
+  }
+
+  // Open half-edges in a cycle that fill_small_holes() may fill, at most.
+  static constexpr std::size_t max_fill = 32;
+  // Turning around a vertex through more linked faces than this (a vertex's degree is
+  // about 6) means faces winding around it: left to carve_repair.h.
+  static constexpr std::size_t longest_turn = 64;
+
+  // The loops fill_small_holes() may fill, each given by positions in its sorted half-edges:
+  // loop l is loop_halfedges[loop_start[l], loop_start[l + 1]), its ears
+  // loop_ears[loop_ears_start[l], loop_ears_start[l + 1]). Half-edge loop[q] runs from t_q to
+  // t_(q+1); reversed, the polygon has vertex p = t_(m-1-p), and its edge from p to p+1 is the
+  // twin of loop[m-2-p] (indices mod m).
+  struct Hole_plan
+  {
+    std::vector<std::size_t> loop_halfedges, loop_start = std::vector<std::size_t>(1, 0),
+                                             loop_ears_start = std::vector<std::size_t>(1, 0);
+    std::vector<Hole_ear> loop_ears;
+    std::vector<std::uint32_t> left_open; // vertices of the cycles and loops not filled, sorted
+  };
+
+  // The open half-edge after halfedges[k] (sorted by tail), or halfedges.size() if none: the
+  // only one leaving its head, or, when several do (holes that touch there), the one that ends
+  // the fan of linked faces turning around the head from halfedges[k]'s face, as next_open()
+  // of carve_repair.h does (the cycle then passes through the head twice and is split).
+  std::size_t next_open_halfedge(const std::vector<Boundary_halfedge>& halfedges, std::size_t k) const
+  {
+    const std::size_t no_successor = halfedges.size();
+    const std::uint32_t head = halfedges[k].head;
+    const auto first = std::lower_bound(halfedges.begin(), halfedges.end(), Boundary_halfedge{head, 0, 0});
+    if(first == halfedges.end() || first->tail != head)
+      return no_successor;
+    if(first + 1 == halfedges.end() || (first + 1)->tail != head)
+      return std::size_t(first - halfedges.begin());
+    Face_handle f = face_of(halfedges[k].code);
+    const Vertex_handle v = f->vertex(cw(int(halfedges[k].code & index_bits)));
+    int leaving = ccw(int(halfedges[k].code & index_bits)); // f's half-edge that leaves v
+    if(!turn_to_open_halfedge(f, v, leaving, [](Face_handle g, int i) { return g->neighbor(i) == Face_handle(); },
+                              longest_turn))
+      return no_successor; // faces winding around v: not a hole to fill here
+    for(auto it = first; it != halfedges.end() && it->tail == head; ++it)
+      if((it->code & ~flag_bits) == reinterpret_cast<std::uintptr_t>(&*f) && int(it->code & index_bits) == leaving)
+        return std::size_t(it - halfedges.begin());
+    return no_successor;
+  }
+
+  // Pass 1 of fill_small_holes(): traces the open half-edges into cycles (`done` marks those
+  // traced), splits them into loops and clips every loop; the loops clipped go to `plan`, the
+  // vertices of what stays open to plan.left_open.
+  template <class PointIterator>
+  void plan_hole_fills(PointIterator points, const std::vector<Boundary_halfedge>& halfedges, std::vector<char>& done,
+                       Hole_plan& plan) const
+  {
+    const auto& gt = tr_.geom_traits();
+    const std::size_t m = halfedges.size();
+    std::vector<std::size_t> cycle, loop;
+    Hole_clipper clipper;
+    std::vector<Hole_ear> ears;
+    auto plan_loop = [&](std::vector<std::size_t>::const_iterator first, std::vector<std::size_t>::const_iterator last) {
+      const std::size_t size = std::size_t(last - first);
+      if(size < 3 ||
+         !clipper.clip(gt, size, [&](std::size_t q) -> decltype(auto) { return points[halfedges[first[std::ptrdiff_t(q)]].tail]; },
+                       ears)) {
+        for(auto h = first; h != last; ++h)
+          plan.left_open.push_back(halfedges[*h].tail);
+        return;
+      }
+      plan.loop_halfedges.insert(plan.loop_halfedges.end(), first, last);
+      plan.loop_start.push_back(plan.loop_halfedges.size());
+      plan.loop_ears.insert(plan.loop_ears.end(), ears.begin(), ears.end());
+      plan.loop_ears_start.push_back(plan.loop_ears.size());
+    };
+    for(std::size_t start = 0; start < m; ++start) {
+      if(done[start])
+        continue;
+      cycle.clear();
+      bool closed = false;
+      for(std::size_t at = start; !done[at] && cycle.size() < max_fill;) {
+        done[at] = 1;
+        cycle.push_back(at);
+        at = next_open_halfedge(halfedges, at);
+        if(at == m)
+          break;
+        if(at == start) {
+          closed = true;
+          break;
+        }
+      }
+      if(!closed) {
+        for(const std::size_t h : cycle)
+          plan.left_open.push_back(halfedges[h].tail);
+        continue;
+      }
+      // A cycle through a vertex twice (holes that touch there, the successor having turned
+      // through the faces between them) is split there into loops, each through distinct
+      // vertices.
+      split_at_repeated_vertices(cycle, [&](std::size_t h) { return halfedges[h].tail; }, loop, plan_loop);
+    }
+    std::sort(plan.left_open.begin(), plan.left_open.end());
+  }
+
+  // Pass 2 of fill_small_holes(): fills the loops of `plan` that share no vertex with one left
+  // open, and marks their half-edges in `closed_by_fill`. A loop left open may be
+  // an island of kept faces inside a hole that touches it at a vertex (a kept face whose
+  // three neighbours are missing): the hole's loop around it would be filled over it.
+  // Leaving the whole region to carve_repair.h keeps the faces from overlapping.
+  template <class PointIterator>
+  void fill_planned_holes(PointIterator points, const std::vector<Boundary_halfedge>& halfedges, const Hole_plan& plan,
+                          std::vector<char>& closed_by_fill)
+  {
     auto& tds = tr_.tds();
     const auto& gt = tr_.geom_traits();
-    auto face_of = [&](std::uintptr_t code) {
-      return tds.faces().iterator_to(*reinterpret_cast<Face*>(code & ~flag_bits));
-    };
-    // The open half-edge after halfedges[k]: the only one leaving its head, or, when several
-    // do (holes that touch there), the one that ends the fan of linked faces turning around
-    // the head from halfedges[k]'s face, as next_open() of carve_repair.h does (the cycle then
-    // passes through the head twice and is split below).
-    auto successor = [&](std::size_t k) {
-      const std::uint32_t head = halfedges[k].head;
-      const auto first = std::lower_bound(halfedges.begin(), halfedges.end(), Boundary_halfedge{head, 0, 0});
-      if(first == halfedges.end() || first->tail != head)
-        return no_successor;
-      if(first + 1 == halfedges.end() || (first + 1)->tail != head)
-        return std::size_t(first - halfedges.begin());
-      Face_handle f = face_of(halfedges[k].code);
-      const Vertex_handle v = f->vertex(cw(int(halfedges[k].code & index_bits)));
-      int leaving = ccw(int(halfedges[k].code & index_bits)); // f's half-edge that leaves v
-      if(!turn_to_open_halfedge(f, v, leaving, [](Face_handle g, int i) { return g->neighbor(i) == Face_handle(); },
-                                longest_turn))
-        return no_successor; // faces winding around v: not a hole to fill here
-      for(auto it = first; it != halfedges.end() && it->tail == head; ++it)
-        if((it->code & ~flag_bits) == reinterpret_cast<std::uintptr_t>(&*f) && int(it->code & index_bits) == leaving)
-          return std::size_t(it - halfedges.begin());
-      return no_successor;
-    };
     // Links half-edge i of f (from `tail` to `head`) to half-edge j of g, with the in-circle test.
     auto link = [&](Face_handle f, int i, std::uint32_t tail, std::uint32_t head, Face_handle g, int j) {
       link_and_test(gt, f, i, g, j, f->vertex(i)->point(), points[tail], points[head], out_.edges_tested,
@@ -770,79 +992,22 @@ private:
       Face_handle face;
       int index;
     };
-    // Pass 1: trace, split, and clip every loop; the vertices of what stays open are marked.
-    // Half-edge loop[q] runs from t_q to t_(q+1); reversed, the polygon has vertex
-    // p = t_(m-1-p), and its edge from p to p+1 is the twin of loop[m-2-p] (indices mod m).
-    std::vector<char> done(m, 0);
-    std::vector<std::size_t> cycle, loop, polygon;
-    Hole_clipper clipper;
-    std::vector<Hole_ear> ears;
-    std::vector<std::size_t> loop_halfedges, loop_start(1, 0), loop_ears_start(1, 0);
-    std::vector<Hole_ear> loop_ears;
-    std::vector<std::uint32_t> left_open; // vertices of the cycles and loops not filled
-    auto plan_loop = [&](std::vector<std::size_t>::const_iterator first, std::vector<std::size_t>::const_iterator last) {
-      const std::size_t size = std::size_t(last - first);
-      if(size < 3 ||
-         !clipper.clip(gt, size, [&](std::size_t q) -> decltype(auto) { return points[halfedges[first[std::ptrdiff_t(q)]].tail]; },
-                       ears)) {
-        for(auto h = first; h != last; ++h)
-          left_open.push_back(halfedges[*h].tail);
-        return;
-      }
-      loop_halfedges.insert(loop_halfedges.end(), first, last);
-      loop_start.push_back(loop_halfedges.size());
-      loop_ears.insert(loop_ears.end(), ears.begin(), ears.end());
-      loop_ears_start.push_back(loop_ears.size());
-    };
-    for(std::size_t start = 0; start < m; ++start) {
-      if(done[start])
-        continue;
-      cycle.clear();
-      bool closed = false;
-      for(std::size_t at = start; !done[at] && cycle.size() < max_fill;) {
-        done[at] = 1;
-        cycle.push_back(at);
-        at = successor(at);
-        if(at == no_successor)
-          break;
-        if(at == start) {
-          closed = true;
-          break;
-        }
-      }
-      if(!closed) {
-        for(const std::size_t h : cycle)
-          left_open.push_back(halfedges[h].tail);
-        continue;
-      }
-      // A cycle through a vertex twice (holes that touch there, the successor having turned
-      // through the faces between them) is split there into loops, each through distinct
-      // vertices.
-      split_at_repeated_vertices(cycle, [&](std::size_t h) { return halfedges[h].tail; }, loop, plan_loop);
-    }
-    std::sort(left_open.begin(), left_open.end());
-
-    // Pass 2: fill the loops that share no vertex with one left open. A loop left open may be
-    // an island of kept faces inside a hole that touches it at a vertex (a kept face whose
-    // three neighbours are missing): the hole's loop around it would be filled over it.
-    // Leaving the whole region to carve_repair.h keeps the faces from overlapping.
     std::vector<Diagonal> diagonals;
-    std::vector<char>& closed_by_fill = done; // reused: every entry is 1 after pass 1
-    std::fill(closed_by_fill.begin(), closed_by_fill.end(), 0);
-    for(std::size_t l = 0; l + 1 < loop_start.size(); ++l) {
-      const std::size_t* first = loop_halfedges.data() + loop_start[l];
-      const std::size_t size = loop_start[l + 1] - loop_start[l];
+    std::vector<std::size_t> polygon;
+    for(std::size_t l = 0; l + 1 < plan.loop_start.size(); ++l) {
+      const std::size_t* first = plan.loop_halfedges.data() + plan.loop_start[l];
+      const std::size_t size = plan.loop_start[l + 1] - plan.loop_start[l];
       polygon.resize(size);
       bool touches_open = false;
       for(std::size_t p = 0; p < size; ++p) {
         polygon[p] = halfedges[first[hole_corner(p, size)]].tail;
-        touches_open = touches_open || std::binary_search(left_open.begin(), left_open.end(), polygon[p]);
+        touches_open = touches_open || std::binary_search(plan.left_open.begin(), plan.left_open.end(), polygon[p]);
       }
       if(touches_open)
         continue;
       diagonals.clear();
-      for(std::size_t e = loop_ears_start[l]; e < loop_ears_start[l + 1]; ++e) {
-        const Hole_ear& t = loop_ears[e];
+      for(std::size_t e = plan.loop_ears_start[l]; e < plan.loop_ears_start[l + 1]; ++e) {
+        const Hole_ear& t = plan.loop_ears[e];
         Vertex_handle corner[3];
         for(int c = 0; c < 3; ++c) {
           const std::uintptr_t code = halfedges[first[hole_corner(t.corner[c], size)]].code;
@@ -853,7 +1018,7 @@ private:
         // The edge opposite slot i runs from polygon vertex `from` to `to`.
         for(int i = 0; i < 3; ++i) {
           const std::size_t from = t.corner[ccw(i)], to = t.corner[cw(i)];
-          const std::uint32_t tail = polygon[from], head = polygon[to];
+          const std::uint32_t tail = std::uint32_t(polygon[from]), head = std::uint32_t(polygon[to]);
           if(t.closes[i] != Hole_ear::diagonal) { // a side of the hole: its open half-edge is the twin
             const std::uintptr_t twin = halfedges[first[t.closes[i]]].code;
             link(f, i, tail, head, face_of(twin), int(twin & index_bits));
@@ -871,12 +1036,6 @@ private:
         closed_by_fill[first[q]] = 1;
       ++out_.holes_filled;
     }
-    std::sort(out_.filled_faces.begin(), out_.filled_faces.end());
-    std::size_t left = 0;
-    for(std::size_t k = 0; k < m; ++k)
-      if(!closed_by_fill[k])
-        halfedges[left++] = halfedges[k];
-    halfedges.resize(left);
   }
 
   // Links the unpaired half-edges into one cycle, checks that it is a convex polygon wound
@@ -916,7 +1075,7 @@ private:
     std::vector<Face_handle> outside(m);
     for(std::size_t k = 0; k < m; ++k) {
       const std::uintptr_t code = hull[cycle[k]].code;
-      const Face_handle inside = tds.faces().iterator_to(*reinterpret_cast<Face*>(code & ~flag_bits));
+      const Face_handle inside = face_of(code);
       const int i = int(code & index_bits);
       outside[k] = tds.create_face(inside->vertex(cw(i)), inside->vertex(ccw(i)), infinite);
       tds.set_adjacency(outside[k], 2, inside, i);
@@ -926,12 +1085,6 @@ private:
     infinite->set_face(outside[0]);
     return Outcome::ok;
   }
-
-  // Faces the tolerant import may leave out before it gives up: each one usually costs the
-  // local repair a carved star, and past 1.5% of the faces (measured: index triples of a
-  // triangulation whose points then moved by 0.1 spacing, 5% of the faces inverted) the
-  // repair costs more than a rebuild; stopping early saves the rest of the import.
-  std::size_t max_dropped() const { return number_of_faces_ / 64 + 64; }
 
   Triangulation& tr_;
   const std::size_t n_, number_of_faces_;

@@ -14,6 +14,7 @@
 #define CGAL_DELAUNAY_FROM_PREDICTION_INTERNAL_IMPORT_SPATIAL_ORDER_H
 
 #include <CGAL/Delaunay_from_prediction/internal/toolbox/concurrency.h>
+#include <CGAL/Delaunay_from_prediction/internal/toolbox/counting_sort.h>
 #include <CGAL/Delaunay_from_prediction/internal/toolbox/grid.h>
 #include <CGAL/Delaunay_from_prediction/internal/toolbox/random.h>
 
@@ -55,83 +56,6 @@ constexpr std::uint64_t brio_seed = 0x5eed5eed5eedull;
 // resolve densities varying by 4^6 times the points per cell.
 constexpr int max_grid_depth = 6;
 
-// Stable counting sort of the items 0..m-1 by key_at(k) < buckets: calls place(position,
-// item_at(k)) once for each item, positions in key order and, among equal keys, in item
-// order, and sets end[b] to the position after the last item of bucket b. With `parallel`
-// (and m large enough to pay), on TBB's threads in three passes with the same positions:
-// blocks of items count their keys' coarse buckets (the high bits), then copy their items
-// with their keys into a buffer in coarse order, then each coarse bucket is counting-sorted by
-// the low bits from its stretch of the buffer, which the cache holds; every pass writes only
-// what its block or bucket owns. key_at, item_at and place are then called from several
-// threads; key_at in item order within each block of items.
-template <class KeyAt, class ItemAt, class Place>
-void counting_sort(std::size_t m, std::size_t buckets, const KeyAt& key_at, const ItemAt& item_at, const Place& place,
-                   bool parallel, std::vector<std::uint32_t>& end)
-{
-  using Item = std::decay_t<decltype(item_at(std::size_t(0)))>;
-  std::unique_ptr<std::uint32_t[]> key(new std::uint32_t[m]); // not zero-filled: written before read
-  end.assign(buckets, 0);
-  if(!parallel || m < (std::size_t(1) << 16)) {
-    std::vector<std::uint32_t> start(buckets + 1, 0);
-    for(std::size_t k = 0; k < m; ++k) {
-      key[k] = std::uint32_t(key_at(k));
-      ++start[key[k] + 1];
-    }
-    for(std::size_t b = 1; b <= buckets; ++b)
-      start[b] += start[b - 1];
-    for(std::size_t k = 0; k < m; ++k)
-      place(std::size_t(start[key[k]]++), item_at(k));
-    std::copy(start.begin(), start.end() - 1, end.begin());
-    return;
-  }
-  int shift = 0; // coarse bucket = key >> shift, at most 1024 of them
-  while(((buckets - 1) >> shift) >= 1024)
-    ++shift;
-  const std::size_t coarse = ((buckets - 1) >> shift) + 1, fine = std::size_t(1) << shift;
-  const std::size_t block = 1 << 16, blocks = (m + block - 1) / block;
-  std::vector<std::uint32_t> offset(blocks * coarse, 0), coarse_start(coarse + 1, 0);
-  for_each_block(true, blocks, [&](std::size_t b) {
-    std::uint32_t* count = offset.data() + b * coarse;
-    for(std::size_t k = b * block, last = (std::min)(m, k + block); k < last; ++k) {
-      key[k] = std::uint32_t(key_at(k));
-      ++count[key[k] >> shift];
-    }
-  });
-  std::uint32_t sum = 0; // offsets in (coarse bucket, block) order
-  for(std::size_t c = 0; c < coarse; ++c) {
-    coarse_start[c] = sum;
-    for(std::size_t b = 0; b < blocks; ++b) {
-      const std::uint32_t count = offset[b * coarse + c];
-      offset[b * coarse + c] = sum;
-      sum += count;
-    }
-  }
-  coarse_start[coarse] = sum;
-  std::vector<std::uint32_t> key_in_coarse_order(m);
-  std::vector<Item> item_in_coarse_order(m);
-  for_each_block(true, blocks, [&](std::size_t b) {
-    std::uint32_t* next = offset.data() + b * coarse;
-    for(std::size_t k = b * block, last = (std::min)(m, k + block); k < last; ++k) {
-      const std::uint32_t i = next[key[k] >> shift]++;
-      key_in_coarse_order[i] = key[k];
-      item_in_coarse_order[i] = item_at(k);
-    }
-  });
-  key.reset();
-  for_each_block(true, coarse, [&](std::size_t c) {
-    const std::size_t first_key = c << shift, keys = (std::min)(fine, buckets - first_key);
-    std::vector<std::uint32_t> next(keys + 1, 0);
-    for(std::uint32_t i = coarse_start[c]; i < coarse_start[c + 1]; ++i)
-      ++next[key_in_coarse_order[i] - first_key + 1];
-    next[0] = coarse_start[c];
-    for(std::size_t j = 1; j <= keys; ++j)
-      next[j] += next[j - 1];
-    for(std::uint32_t i = coarse_start[c]; i < coarse_start[c + 1]; ++i)
-      place(std::size_t(next[key_in_coarse_order[i] - first_key]++), item_in_coarse_order[i]);
-    std::copy(next.begin(), next.begin() + std::ptrdiff_t(keys), end.begin() + std::ptrdiff_t(first_key));
-  });
-}
-
 // Writes to `out` the indices in [first, last) sorted along a serpentine grid over the
 // bounding box of their points, about four points a cell, rows alternately left to right and
 // right to left, so that consecutive indices name nearby points; then sorts each crowded cell
@@ -150,40 +74,27 @@ void sort_serpentine(const Index* first, const Index* last, Index* out, PointAt 
   const std::size_t m = std::size_t(last - first);
   parallel = parallel && !biased_rounds;
   const std::size_t block = 1 << 16, blocks = (m + block - 1) / block;
-  std::vector<std::array<double, 4>> box(blocks); // xmin, xmax, ymin, ymax of each block
+  std::vector<Box> block_box(blocks);
   for_each_block(parallel, blocks, [&](std::size_t b) {
-    const Index* i = first + b * block;
-    const Index* end = first + (std::min)(m, (b + 1) * block);
-    double xmin = CGAL::to_double(point_at(*i).x()), xmax = xmin;
-    double ymin = CGAL::to_double(point_at(*i).y()), ymax = ymin;
-    for(; i != end; ++i) {
-      const double x = CGAL::to_double(point_at(*i).x()), y = CGAL::to_double(point_at(*i).y());
-      xmin = (std::min)(xmin, x);
-      xmax = (std::max)(xmax, x);
-      ymin = (std::min)(ymin, y);
-      ymax = (std::max)(ymax, y);
-    }
-    box[b] = {xmin, xmax, ymin, ymax};
+    const std::size_t begin = b * block;
+    block_box[b] = bounding_box((std::min)(m, begin + block) - begin,
+                                [&](std::size_t k) -> decltype(point_at(*first)) { return point_at(first[begin + k]); });
   });
-  double xmin = box[0][0], xmax = box[0][1], ymin = box[0][2], ymax = box[0][3];
-  for(const auto& b : box) {
-    xmin = (std::min)(xmin, b[0]);
-    xmax = (std::max)(xmax, b[1]);
-    ymin = (std::min)(ymin, b[2]);
-    ymax = (std::max)(ymax, b[3]);
-  }
+  Box box;
+  for(const Box& b : block_box)
+    box.add(b);
   const std::size_t fit = std::size_t(std::sqrt(double(m) / 4));
   const std::size_t side = depth == 0 ? (std::min)(std::size_t(1) << 12, (std::max)(std::size_t(1), fit))
                                       : (std::max)(std::size_t(2), fit);
-  const std::size_t cells = side * side;
-  const Grid_axis column(xmin, xmax, side), row(ymin, ymax, side);
+  const Cell_grid grid(box, side, side);
+  const std::size_t cells = grid.cells();
   Splitmix64 random{brio_seed};
   std::vector<std::uint32_t> end;
   counting_sort(
       m, (biased_rounds ? brio_rounds : 1) * cells,
       [&](std::size_t k) {
         const auto& p = point_at(first[k]);
-        const std::size_t cx = column(CGAL::to_double(p.x())), cy = row(CGAL::to_double(p.y()));
+        const std::size_t cx = grid.column(CGAL::to_double(p.x())), cy = grid.row(CGAL::to_double(p.y()));
         std::size_t cell = cy * side + ((cy & 1) ? side - 1 - cx : cx);
         if(biased_rounds) // (sequential: in item order)
           cell += (brio_rounds - 1 - brio_round(random)) * cells;

@@ -215,17 +215,30 @@ std::size_t count_points_in_circle(const DT& dt, typename DT::Vertex_handle a,
   return inside;
 }
 
-// The measures of Table 1 into `m` (a Prediction_measures whose points and faces are set),
-// from DT(P) as `dt` (each vertex's info the smallest index of its point) and the statistics
-// of the delaunay_from_prediction() call that built it from the faces (Strategy::flips).
-template <class Measures, class PointIterator, class FaceRange, class DT>
-void measure_prediction(Measures& m, PointIterator point_at, std::size_t n, const FaceRange& faces, DT& dt,
-                        const Statistics& stats, bool violations = true)
+// What the stages of measure_prediction() share: DT(P) by point index, and G in the canonical
+// indices of DT(P)'s vertices (each vertex's info).
+template <class DT>
+struct Measured_prediction
+{
+  using Triple = std::array<std::size_t, 3>;
+  struct Half_edge { std::uint64_t key; std::uint32_t face; std::uint8_t slot; };
+  std::vector<typename DT::Vertex_handle> vertex_of; // each index's vertex
+  std::vector<std::uint64_t> dt_edges;               // DT's edges, sorted keys
+  std::vector<std::size_t> degree;                   // in DT, by canonical index
+  std::vector<Triple> g_faces;                       // G's faces, ccw
+  std::vector<char> degenerate;                      // per face of G: flat or repeated index
+  std::vector<Half_edge> half_edges;                 // G's, each carrying its face and slot
+  std::vector<char> used;                            // per index: whether a face of G has it
+};
+
+// Each index's vertex into `vertex_of`; equal points share the vertex of the smallest index.
+// Returns how many indices are such copies.
+template <class PointIterator, class DT>
+std::size_t vertices_by_point_index(const DT& dt, PointIterator point_at, std::size_t n,
+                                    std::vector<typename DT::Vertex_handle>& vertex_of)
 {
   using Vertex_handle = typename DT::Vertex_handle;
-
-  // Each index's vertex; equal points share the vertex of the smallest index.
-  std::vector<Vertex_handle> vertex_of(n);
+  vertex_of.assign(n, Vertex_handle());
   for(auto v = dt.finite_vertices_begin(); v != dt.finite_vertices_end(); ++v)
     vertex_of[v->info()] = v;
   std::size_t duplicates = 0;
@@ -243,64 +256,76 @@ void measure_prediction(Measures& m, PointIterator point_at, std::size_t n, cons
     }
     ++duplicates;
   }
-  auto canonical = [&](std::size_t i) { return std::size_t(vertex_of[i]->info()); };
+  return duplicates;
+}
 
-  // DT's edges as sorted keys of canonical indices, and the degrees.
-  std::vector<std::uint64_t> dt_edges;
-  std::vector<std::size_t> degree(n, 0);
-  dt_edges.reserve(3 * n);
+// DT's edges as sorted keys of canonical indices, and the degrees.
+template <class DT>
+void delaunay_edge_keys(const DT& dt, std::size_t n, Measured_prediction<DT>& g)
+{
+  g.degree.assign(n, 0);
+  g.dt_edges.reserve(3 * n);
   for(auto e = dt.finite_edges_begin(); e != dt.finite_edges_end(); ++e) {
     const std::size_t a = e->first->vertex(internal::ccw(e->second))->info();
     const std::size_t b = e->first->vertex(internal::cw(e->second))->info();
-    dt_edges.push_back(internal::edge_key(a, b));
-    ++degree[a];
-    ++degree[b];
+    g.dt_edges.push_back(internal::edge_key(a, b));
+    ++g.degree[a];
+    ++g.degree[b];
   }
-  internal::sort_by_point_index(dt_edges, n, [](std::uint64_t key) { return key; },
+  internal::sort_by_point_index(g.dt_edges, n, [](std::uint64_t key) { return key; },
                                 std::less<std::uint64_t>());
-  m.delaunay_edges = dt_edges.size();
-  using Triple = std::array<std::size_t, 3>;
+}
 
-  // G's faces in canonical indices, ccw; degenerate ones flagged. Half-edges carry their face.
-  const auto& gt = dt.geom_traits();
-  auto orientation = gt.orientation_2_object();
-  struct Half_edge { std::uint64_t key; std::uint32_t face; std::uint8_t slot; };
-  std::vector<Triple> g_faces;
-  std::vector<char> degenerate;
-  std::vector<Half_edge> half_edges;
-  std::vector<char> used(n, 0);
-  g_faces.reserve(m.faces);
-  half_edges.reserve(3 * m.faces);
-  {
-    std::size_t k = 0, idx[3];
-    for(const auto& face : faces) {
-      internal::read_face(face, k++, n, idx); // cannot throw: delaunay_from_prediction checked
-      used[idx[0]] = used[idx[1]] = used[idx[2]] = 1;
-      Triple t{canonical(idx[0]), canonical(idx[1]), canonical(idx[2])};
-      bool flat = t[0] == t[1] || t[1] == t[2] || t[0] == t[2];
-      if(!flat) {
-        const Orientation o = orientation(point_at[t[0]], point_at[t[1]], point_at[t[2]]);
-        flat = o == COLLINEAR;
-        if(o == RIGHT_TURN)
-          std::swap(t[1], t[2]);
-      }
-      const std::uint32_t id = std::uint32_t(g_faces.size());
-      for(std::uint8_t j = 0; j < 3; ++j) {
-        const std::size_t a = t[internal::ccw(j)], b = t[internal::cw(j)];
-        if(a != b)
-          half_edges.push_back({internal::edge_key(a, b), id, j});
-      }
-      g_faces.push_back(t);
-      degenerate.push_back(flat ? 1 : 0);
+// G's `face_count` faces in canonical indices, ccw; degenerate ones flagged. Half-edges carry
+// their face; the indices the faces use are marked.
+template <class PointIterator, class FaceRange, class DT>
+void predicted_faces_in_canonical_indices(const DT& dt, PointIterator point_at, std::size_t n,
+                                          const FaceRange& faces, std::size_t face_count,
+                                          Measured_prediction<DT>& g)
+{
+  using Triple = typename Measured_prediction<DT>::Triple;
+  auto orientation = dt.geom_traits().orientation_2_object();
+  auto canonical = [&](std::size_t i) { return std::size_t(g.vertex_of[i]->info()); };
+  g.used.assign(n, 0);
+  g.g_faces.reserve(face_count);
+  g.half_edges.reserve(3 * face_count);
+  std::size_t k = 0, idx[3];
+  for(const auto& face : faces) {
+    internal::read_face(face, k++, n, idx); // cannot throw: delaunay_from_prediction checked
+    g.used[idx[0]] = g.used[idx[1]] = g.used[idx[2]] = 1;
+    Triple t{canonical(idx[0]), canonical(idx[1]), canonical(idx[2])};
+    bool flat = t[0] == t[1] || t[1] == t[2] || t[0] == t[2];
+    if(!flat) {
+      const Orientation o = orientation(point_at[t[0]], point_at[t[1]], point_at[t[2]]);
+      flat = o == COLLINEAR;
+      if(o == RIGHT_TURN)
+        std::swap(t[1], t[2]);
     }
+    const std::uint32_t id = std::uint32_t(g.g_faces.size());
+    for(std::uint8_t j = 0; j < 3; ++j) {
+      const std::size_t a = t[internal::ccw(j)], b = t[internal::cw(j)];
+      if(a != b)
+        g.half_edges.push_back({internal::edge_key(a, b), id, j});
+    }
+    g.g_faces.push_back(t);
+    g.degenerate.push_back(flat ? 1 : 0);
   }
+}
 
-  // D, D_missing, D_local, D_cross, d_cross: one group of half-edges per edge of G.
+// D, D_missing, D_local, D_cross, d_cross: one group of half-edges per edge of G, merged with
+// DT's sorted edges. A missing edge's crossings are counted by a walk in DT (planar DT only).
+template <class Measures, class PointIterator, class DT>
+void measure_edges(Measures& m, const DT& dt, PointIterator point_at, std::size_t n, Measured_prediction<DT>& g)
+{
+  using Half_edge = typename Measured_prediction<DT>::Half_edge;
+  using Triple = typename Measured_prediction<DT>::Triple;
+  const auto& gt = dt.geom_traits();
+  std::vector<Half_edge>& half_edges = g.half_edges;
   internal::sort_by_point_index(half_edges, n, [](const Half_edge& x) { return x.key; },
                                 [](const Half_edge& x, const Half_edge& y) { return x.key < y.key; });
   std::size_t common = 0;
   const bool planar = dt.dimension() == 2;
-  auto next_dt_edge = dt_edges.begin(); // both lists sorted: a merge, not a search per edge
+  auto next_dt_edge = g.dt_edges.begin(); // both lists sorted: a merge, not a search per edge
   for(std::size_t h = 0; h < half_edges.size();) {
     std::size_t end = h + 1;
     while(end < half_edges.size() && half_edges[end].key == half_edges[h].key)
@@ -308,17 +333,17 @@ void measure_prediction(Measures& m, PointIterator point_at, std::size_t n, cons
     const std::uint64_t key = half_edges[h].key;
     ++m.edges;
     const std::size_t a = std::size_t(key >> 32), b = std::size_t(key & 0xffffffffu);
-    while(next_dt_edge != dt_edges.end() && *next_dt_edge < key)
+    while(next_dt_edge != g.dt_edges.end() && *next_dt_edge < key)
       ++next_dt_edge;
-    if(next_dt_edge != dt_edges.end() && *next_dt_edge == key) {
+    if(next_dt_edge != g.dt_edges.end() && *next_dt_edge == key) {
       ++common;
     } else {
       ++m.D;
       if(planar) {
         // Start from the endpoint of smaller degree: the walk begins with a turn around it.
-        const bool from_a = degree[a] <= degree[b];
+        const bool from_a = g.degree[a] <= g.degree[b];
         const std::size_t crossings =
-            internal::count_crossings(dt, vertex_of[from_a ? a : b], vertex_of[from_a ? b : a]);
+            internal::count_crossings(dt, g.vertex_of[from_a ? a : b], g.vertex_of[from_a ? b : a]);
         m.D_cross += crossings;
         m.d_cross = (std::max)(m.d_cross, crossings);
       }
@@ -326,17 +351,17 @@ void measure_prediction(Measures& m, PointIterator point_at, std::size_t n, cons
     if(end - h > 2) {
       ++m.edges_with_more_than_two_faces;
     } else if(end - h == 2) {
-      const Triple& f = g_faces[half_edges[h].face];
-      const Triple& g = g_faces[half_edges[h + 1].face];
-      const int sf = half_edges[h].slot, sg = half_edges[h + 1].slot;
-      const std::size_t c = f[sf], d = g[sg];
-      if(!degenerate[half_edges[h].face] && !degenerate[half_edges[h + 1].face] && c != d) {
+      const Triple& f = g.g_faces[half_edges[h].face];
+      const Triple& e = g.g_faces[half_edges[h + 1].face];
+      const int sf = half_edges[h].slot, se = half_edges[h + 1].slot;
+      const std::size_t c = f[sf], d = e[se];
+      if(!g.degenerate[half_edges[h].face] && !g.degenerate[half_edges[h + 1].face] && c != d) {
         // Faces on both sides: the test is symmetric, one suffices. Folded faces (both on one
         // side, not in a triangulation): the edge counts if either test fails.
-        const bool same_side = f[internal::ccw(sf)] == g[internal::ccw(sg)];
+        const bool same_side = f[internal::ccw(sf)] == e[internal::ccw(se)];
         if(!internal::is_locally_delaunay(gt, point_at[f[0]], point_at[f[1]], point_at[f[2]], point_at[d]) ||
            (same_side &&
-            !internal::is_locally_delaunay(gt, point_at[g[0]], point_at[g[1]], point_at[g[2]], point_at[c])))
+            !internal::is_locally_delaunay(gt, point_at[e[0]], point_at[e[1]], point_at[e[2]], point_at[c])))
           ++m.D_local;
       }
     }
@@ -344,15 +369,23 @@ void measure_prediction(Measures& m, PointIterator point_at, std::size_t n, cons
   }
   m.D_missing = m.delaunay_edges - common;
   m.D_flip_lower = m.D;
+}
 
-  // D_vio, d_vio over the distinct faces of G; a face of DT(P) has no point inside. (Their
-  // cost is D_vio, which a few long faces along the hull make quadratic: `violations` false
-  // leaves them 0, for benchmarks that need d_cross on large inputs.)
+// D_vio, d_vio over the distinct faces of G; a face of DT(P) has no point inside. (Their
+// cost is D_vio, which a few long faces along the hull make quadratic: `violations` false
+// leaves them 0, for benchmarks that need d_cross on large inputs.) Counts the degenerate
+// faces too; returns whether a face is listed twice.
+template <class Measures, class DT>
+bool measure_circle_violations(Measures& m, const DT& dt, std::size_t n, const Measured_prediction<DT>& g,
+                               bool violations)
+{
+  using Triple = typename Measured_prediction<DT>::Triple;
   using internal::Face_key;
+  const bool planar = dt.dimension() == 2;
   auto low_pair_of = [](const Face_key& f) { return f.low_pair; };
-  std::vector<Face_key> face_keys(g_faces.size()), dt_face_keys;
-  for(std::uint32_t k = 0; k < g_faces.size(); ++k)
-    face_keys[k] = internal::face_key(g_faces[k][0], g_faces[k][1], g_faces[k][2], k);
+  std::vector<Face_key> face_keys(g.g_faces.size()), dt_face_keys;
+  for(std::uint32_t k = 0; k < g.g_faces.size(); ++k)
+    face_keys[k] = internal::face_key(g.g_faces[k][0], g.g_faces[k][1], g.g_faces[k][2], k);
   internal::sort_by_point_index(face_keys, n, low_pair_of, std::less<Face_key>());
   if(planar) {
     dt_face_keys.reserve(2 * n);
@@ -363,7 +396,7 @@ void measure_prediction(Measures& m, PointIterator point_at, std::size_t n, cons
   }
   auto next_dt_face = dt_face_keys.begin(); // a merge again
   std::vector<std::uint32_t> mark(n, 0);
-  std::vector<Vertex_handle> queue;
+  std::vector<typename DT::Vertex_handle> queue;
   std::uint32_t stamp = 0;
   bool repeated_face = false;
   for(std::size_t k = 0; k < face_keys.size(); ++k) {
@@ -371,10 +404,10 @@ void measure_prediction(Measures& m, PointIterator point_at, std::size_t n, cons
       repeated_face = true;
       continue;
     }
-    if(!violations && !degenerate[face_keys[k].face])
+    if(!violations && !g.degenerate[face_keys[k].face])
       continue;
     const std::uint32_t face = face_keys[k].face;
-    if(degenerate[face]) {
+    if(g.degenerate[face]) {
       ++m.degenerate_faces;
       continue;
     }
@@ -382,19 +415,25 @@ void measure_prediction(Measures& m, PointIterator point_at, std::size_t n, cons
       ++next_dt_face;
     if(!planar || (next_dt_face != dt_face_keys.end() && next_dt_face->same_face(face_keys[k])))
       continue; // a face of DT(P): no point inside
-    const Triple& t = g_faces[face];
+    const Triple& t = g.g_faces[face];
     if(++stamp == 0) { // wrapped around: clear the marks
       std::fill(mark.begin(), mark.end(), 0);
       stamp = 1;
     }
     const std::size_t inside = internal::count_points_in_circle(
-        dt, vertex_of[t[0]], vertex_of[t[1]], vertex_of[t[2]], mark, stamp, queue);
+        dt, g.vertex_of[t[0]], g.vertex_of[t[1]], g.vertex_of[t[2]], mark, stamp, queue);
     m.D_vio += inside;
     m.d_vio = (std::max)(m.d_vio, inside);
   }
+  return repeated_face;
+}
 
-  // Is G a triangulation of P? The import certified it (orientation, twins, convex hull wound
-  // once) unless it failed; what it tolerates (unused points) is checked here.
+// Is G a triangulation of P? The import certified it (orientation, twins, convex hull wound
+// once) unless it failed; what it tolerates (unused points) is checked here.
+template <class Measures>
+void judge_triangulation(Measures& m, std::size_t n, std::size_t duplicates, const std::vector<char>& used,
+                         bool repeated_face, const Statistics& stats)
+{
   const bool out_of_budget =
       stats.fell_back && stats.outcome == Outcome::flip_budget_exhausted;
   if(n < 3 || m.faces == 0)
@@ -410,6 +449,23 @@ void measure_prediction(Measures& m, PointIterator point_at, std::size_t n, cons
   m.is_triangulation = m.not_a_triangulation.empty();
   if(m.is_triangulation && !out_of_budget)
     m.D_flip_upper = stats.flips;
+}
+
+// The measures of Table 1 into `m` (a Prediction_measures whose points and faces are set),
+// from DT(P) as `dt` (each vertex's info the smallest index of its point) and the statistics
+// of the delaunay_from_prediction() call that built it from the faces (Strategy::flips).
+template <class Measures, class PointIterator, class FaceRange, class DT>
+void measure_prediction(Measures& m, PointIterator point_at, std::size_t n, const FaceRange& faces, DT& dt,
+                        const Statistics& stats, bool violations = true)
+{
+  Measured_prediction<DT> g;
+  const std::size_t duplicates = vertices_by_point_index(dt, point_at, n, g.vertex_of);
+  delaunay_edge_keys(dt, n, g);
+  m.delaunay_edges = g.dt_edges.size();
+  predicted_faces_in_canonical_indices(dt, point_at, n, faces, m.faces, g);
+  measure_edges(m, dt, point_at, n, g);
+  const bool repeated_face = measure_circle_violations(m, dt, n, g, violations);
+  judge_triangulation(m, n, duplicates, g.used, repeated_face, stats);
 }
 
 } // namespace internal

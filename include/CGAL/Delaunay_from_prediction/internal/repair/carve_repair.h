@@ -178,103 +178,14 @@ public:
   // closes the outer cycle with infinite faces. Every new face's edges go on `stack`.
   void commit(std::vector<Edge>& stack)
   {
-    // The stack is long (every failing edge): a bitmap of the carved faces' slots answers
-    // from the cache where the hash table would miss it.
-    using Bitmap = Slot_bitmap<typename Tds::Face>;
-    std::uint64_t low = ~std::uint64_t(0), high = 0;
-    for(const Face_handle f : removed_list_) {
-      low = (std::min)(low, Bitmap::value(&*f));
-      high = (std::max)(high, Bitmap::value(&*f));
-    }
-    if(stack.size() > long_stack && Bitmap::fits(low, high, removed_list_.size() + stack.size())) {
-      // Kept for is_removed(), asked about every face flipped before the carve.
-      carved_bitmap_.reset(new Bitmap(low, high));
-      for(const Face_handle f : removed_list_)
-        carved_bitmap_->insert(&*f);
-      stack.erase(std::remove_if(stack.begin(), stack.end(),
-                                 [&](const Edge& e) { return carved_bitmap_->contains(&*e.first); }),
-                  stack.end());
-    } else {
-      stack.erase(std::remove_if(stack.begin(), stack.end(),
-                                 [&](const Edge& e) { return removed_.contains(&*e.first); }),
-                  stack.end());
-    }
-    created_set_.reserve(created_set_.size() + removed_list_.size());
-    if(keep_undo_log_)
-      record_undo_log();
-    for(const Face_handle f : removed_list_)
-      tds_.delete_face(f);
-    if(may_have_several_fans_)
-      keep_vertices_with_other_fans();
-    for(const Vertex_handle v : detached_)
-      v->set_face(Face_handle());
-    // Every vertex on a cycle keeps the face of an outgoing open half-edge.
-    for(std::size_t k = 0; k < open_.size(); ++k)
-      if(alive_[k])
-        open_[k].first->vertex(ccw(open_[k].second))->set_face(open_[k].first);
-
+    drop_carved_edges(stack);
+    delete_carved_faces();
     // Ears. Polygon edges pair with their open half-edge, diagonals with each other.
     // `linked` marks the open half-edges that get a neighbour: all of them, when the plan is
     // complete (every live loop filled, paired, or the outer one).
     std::vector<char> linked(open_.size(), 0);
-    // (the loop, the diagonal's ends in it) -> the ear's edge on it
-    std::vector<std::pair<std::pair<std::size_t, std::uint64_t>, Edge>> diagonals;
-    for(std::size_t l = 0; l < loops_.size(); ++l) {
-      const Loop& loop = loops_[l];
-      if(loop.dead)
-        continue;
-      if(loop.halfedges.size() == 2) { // two kept faces on one edge, not linked (importer only)
-        const Edge& a = open_[loop.halfedges[0]];
-        const Edge& b = open_[loop.halfedges[1]];
-        tds_.set_adjacency(a.first, a.second, b.first, b.second);
-        linked[loop.halfedges[0]] = linked[loop.halfedges[1]] = 1;
-        stack.push_back(a);
-        continue;
-      }
-      for(const Ear& ear : loop.ears) {
-        const Face_handle f = tds_.create_face(ear.v[0], ear.v[1], ear.v[2]);
-        created_.push_back(f);
-        created_set_.insert(&*f, 0);
-        for(int i = 0; i < 3; ++i) {
-          stack.emplace_back(f, i);
-          if(ear.open[i] != none) {
-            const Edge& e = open_[ear.open[i]];
-            tds_.set_adjacency(f, i, e.first, e.second);
-            linked[ear.open[i]] = 1;
-          } else {
-            diagonals.emplace_back(std::make_pair(l, ear.diagonal[i]), Edge(f, i));
-          }
-        }
-      }
-    }
-    std::sort(diagonals.begin(), diagonals.end(),
-              [](const auto& a, const auto& b) { return a.first < b.first; });
-    for(std::size_t k = 0; k + 1 < diagonals.size(); k += 2) {
-      CGAL_assertion(diagonals[k].first == diagonals[k + 1].first);
-      if(diagonals[k].first != diagonals[k + 1].first)
-        complete_ = false;
-      tds_.set_adjacency(diagonals[k].second.first, diagonals[k].second.second,
-                         diagonals[k + 1].second.first, diagonals[k + 1].second.second);
-    }
-
-    // The outer cycle: the face outside half-edge u->v is (v, u, infinite), as in the importer.
-    if(outer_ != none) {
-      const std::vector<std::size_t>& outer_cycle = loops_[outer_].halfedges;
-      const std::size_t m = outer_cycle.size();
-      std::vector<Face_handle> outside(m);
-      for(std::size_t k = 0; k < m; ++k) {
-        const Edge& e = open_[outer_cycle[k]];
-        outside[k] = tds_.create_face(e.first->vertex(cw(e.second)), e.first->vertex(ccw(e.second)),
-                                      infinite_);
-        created_.push_back(outside[k]);
-        created_set_.insert(&*outside[k], 0);
-        tds_.set_adjacency(outside[k], 2, e.first, e.second);
-        linked[outer_cycle[k]] = 1;
-      }
-      for(std::size_t k = 0; k < m; ++k)
-        tds_.set_adjacency(outside[k], 1, outside[(k + 1) % m], 0);
-      infinite_->set_face(outside[0]);
-    }
+    fill_holes(stack, linked);
+    close_outer_cycle(linked);
     for(std::size_t k = 0; k < open_.size(); ++k)
       if(alive_[k] && !linked[k])
         complete_ = false;
@@ -384,6 +295,120 @@ private:
     const void* neighbor[3];
   };
 
+  // --- Stages of commit(). ---------------------------------------------------------------
+
+  // Drops the entries of `stack` on carved faces. The stack is long (every failing edge): a
+  // bitmap of the carved faces' slots answers from the cache where the hash table would miss it.
+  void drop_carved_edges(std::vector<Edge>& stack)
+  {
+    using Bitmap = Slot_bitmap<typename Tds::Face>;
+    std::uint64_t low = ~std::uint64_t(0), high = 0;
+    for(const Face_handle f : removed_list_) {
+      low = (std::min)(low, Bitmap::value(&*f));
+      high = (std::max)(high, Bitmap::value(&*f));
+    }
+    if(stack.size() > long_stack && Bitmap::fits(low, high, removed_list_.size() + stack.size())) {
+      // Kept for is_removed(), asked about every face flipped before the carve.
+      carved_bitmap_.reset(new Bitmap(low, high));
+      for(const Face_handle f : removed_list_)
+        carved_bitmap_->insert(&*f);
+      stack.erase(std::remove_if(stack.begin(), stack.end(),
+                                 [&](const Edge& e) { return carved_bitmap_->contains(&*e.first); }),
+                  stack.end());
+    } else {
+      stack.erase(std::remove_if(stack.begin(), stack.end(),
+                                 [&](const Edge& e) { return removed_.contains(&*e.first); }),
+                  stack.end());
+    }
+  }
+
+  // Deletes the carved faces (logged first for rollback() when asked) and points every vertex
+  // that keeps a face at one: a cycle vertex at the face of an outgoing open half-edge.
+  void delete_carved_faces()
+  {
+    created_set_.reserve(created_set_.size() + removed_list_.size());
+    if(keep_undo_log_)
+      record_undo_log();
+    for(const Face_handle f : removed_list_)
+      tds_.delete_face(f);
+    if(may_have_several_fans_)
+      keep_vertices_with_other_fans();
+    for(const Vertex_handle v : detached_)
+      v->set_face(Face_handle());
+    // Every vertex on a cycle keeps the face of an outgoing open half-edge.
+    for(std::size_t k = 0; k < open_.size(); ++k)
+      if(alive_[k])
+        open_[k].first->vertex(ccw(open_[k].second))->set_face(open_[k].first);
+  }
+
+  // Creates the ears of every live hole and links them: polygon edges to their open
+  // half-edge (marked in `linked`), diagonals to each other; a loop of two half-edges is
+  // linked directly.
+  void fill_holes(std::vector<Edge>& stack, std::vector<char>& linked)
+  {
+    // (the loop, the diagonal's ends in it) -> the ear's edge on it
+    std::vector<std::pair<std::pair<std::size_t, std::uint64_t>, Edge>> diagonals;
+    for(std::size_t l = 0; l < loops_.size(); ++l) {
+      const Loop& loop = loops_[l];
+      if(loop.dead)
+        continue;
+      if(loop.halfedges.size() == 2) { // two kept faces on one edge, not linked (importer only)
+        const Edge& a = open_[loop.halfedges[0]];
+        const Edge& b = open_[loop.halfedges[1]];
+        tds_.set_adjacency(a.first, a.second, b.first, b.second);
+        linked[loop.halfedges[0]] = linked[loop.halfedges[1]] = 1;
+        stack.push_back(a);
+        continue;
+      }
+      for(const Ear& ear : loop.ears) {
+        const Face_handle f = tds_.create_face(ear.v[0], ear.v[1], ear.v[2]);
+        created_.push_back(f);
+        created_set_.insert(&*f, 0);
+        for(int i = 0; i < 3; ++i) {
+          stack.emplace_back(f, i);
+          if(ear.open[i] != none) {
+            const Edge& e = open_[ear.open[i]];
+            tds_.set_adjacency(f, i, e.first, e.second);
+            linked[ear.open[i]] = 1;
+          } else {
+            diagonals.emplace_back(std::make_pair(l, ear.diagonal[i]), Edge(f, i));
+          }
+        }
+      }
+    }
+    std::sort(diagonals.begin(), diagonals.end(),
+              [](const auto& a, const auto& b) { return a.first < b.first; });
+    for(std::size_t k = 0; k + 1 < diagonals.size(); k += 2) {
+      CGAL_assertion(diagonals[k].first == diagonals[k + 1].first);
+      if(diagonals[k].first != diagonals[k + 1].first)
+        complete_ = false;
+      tds_.set_adjacency(diagonals[k].second.first, diagonals[k].second.second,
+                         diagonals[k + 1].second.first, diagonals[k + 1].second.second);
+    }
+  }
+
+  // The outer cycle: the face outside half-edge u->v is (v, u, infinite), as in the importer.
+  void close_outer_cycle(std::vector<char>& linked)
+  {
+    if(outer_ == none)
+      return;
+    const std::vector<std::size_t>& outer_cycle = loops_[outer_].halfedges;
+    const std::size_t m = outer_cycle.size();
+    std::vector<Face_handle> outside(m);
+    for(std::size_t k = 0; k < m; ++k) {
+      const Edge& e = open_[outer_cycle[k]];
+      outside[k] = tds_.create_face(e.first->vertex(cw(e.second)), e.first->vertex(ccw(e.second)),
+                                    infinite_);
+      created_.push_back(outside[k]);
+      created_set_.insert(&*outside[k], 0);
+      tds_.set_adjacency(outside[k], 2, e.first, e.second);
+      linked[outer_cycle[k]] = 1;
+    }
+    for(std::size_t k = 0; k < m; ++k)
+      tds_.set_adjacency(outside[k], 1, outside[(k + 1) % m], 0);
+    infinite_->set_face(outside[0]);
+  }
+
   void note_modified(Face_handle f, std::vector<const void*>& modified) const
   {
     if(!f->has_vertex(infinite_) && !created_set_.contains(&*f))
@@ -448,16 +473,50 @@ private:
 
     Address_table<char> changed; // vertices of faces carved this round
     std::vector<std::size_t> to_trace;
-    auto open = [&](Face_handle g, int j) {
-      to_trace.push_back(open_.size());
-      Leaving* leaving = leaving_.insert(&*g->vertex(ccw(j)), Leaving()).first;
-      leaving->last = open_.size();
-      ++leaving->alive;
-      position_.insert(halfedge_key(Edge(g, j)), open_.size());
-      open_.emplace_back(g, j);
-      alive_.push_back(1);
-      loop_of_.push_back(none);
-    };
+    open_halfedges_of_carved(first_new, changed, to_trace);
+    retire_changed_loops(changed, to_trace);
+    std::vector<std::vector<std::size_t>> cycles;
+    std::vector<std::size_t> group_of_cycle;
+    trace_cycles(to_trace, cycles, group_of_cycle);
+    const Outcome why = classify_loops(cycles, group_of_cycle, limits);
+    if(why != Outcome::ok)
+      return why;
+
+    outer_ = none;
+    if(outer_is_open) {
+      if(!choose_outer_loop())
+        return Outcome::outer_boundary_not_ccw;
+      // A flap of faces folded over others and glued to them edge by edge shows only in the
+      // outer loop, which then winds twice: it must be a simple polygon (every other loop
+      // winds at most once, so the faces then cover each point at most once).
+      if(carve_crossings(loops_[outer_].halfedges))
+        return Outcome::ok; // widened: traced again next round
+    }
+    carve_islands();
+    return Outcome::ok;
+  }
+
+  // --- Stages of trace_and_fill(). -------------------------------------------------------
+
+  // Registers the half-edge (g, j) of a kept face as open, and as one to trace.
+  void open_halfedge(Face_handle g, int j, std::vector<std::size_t>& to_trace)
+  {
+    to_trace.push_back(open_.size());
+    Leaving* leaving = leaving_.insert(&*g->vertex(ccw(j)), Leaving()).first;
+    leaving->last = open_.size();
+    ++leaving->alive;
+    position_.insert(halfedge_key(Edge(g, j)), open_.size());
+    open_.emplace_back(g, j);
+    alive_.push_back(1);
+    loop_of_.push_back(none);
+  }
+
+  // The faces carved from removed_list_[first_new] on: their half-edges that were open
+  // close, those of kept neighbours open (and, in the first round, the importer's). Their
+  // vertices go to `changed` when there are loops they may change.
+  void open_halfedges_of_carved(std::size_t first_new, Address_table<char>& changed,
+                                std::vector<std::size_t>& to_trace)
+  {
     const bool loops_may_change = !loops_.empty(); // none in the first round
     for(std::size_t k = first_new; k < traced_; ++k) {
       const Face_handle f = removed_list_[k];
@@ -476,16 +535,20 @@ private:
         }
         const Face_handle g = f->neighbor(i);
         if(g != Face_handle() && !removed_.contains(&*g))
-          open(g, g->index(f));
+          open_halfedge(g, g->index(f), to_trace);
       }
     }
     if(rounds_ == 1)
       for(const Edge& e : given_open_)
         if(!removed_.contains(&*e.first))
-          open(e.first, e.second);
+          open_halfedge(e.first, e.second, to_trace);
+  }
 
-    // Loops to trace again: those through a changed vertex, with every loop split from the
-    // same cycle (at a split vertex the loops' successors are not next_open()'s).
+  // Loops to trace again: those through a changed vertex, with every loop split from the
+  // same cycle (at a split vertex the loops' successors are not next_open()'s). They die,
+  // and their live half-edges go to `to_trace`.
+  void retire_changed_loops(const Address_table<char>& changed, std::vector<std::size_t>& to_trace)
+  {
     std::vector<char> dirty_group(groups_, 0);
     for(const Loop& loop : loops_) {
       if(loop.dead || dirty_group[loop.group])
@@ -506,13 +569,15 @@ private:
           to_trace.push_back(h);
         }
     }
+  }
 
-    // Cycles. The open half-edge after h, which ends at v, is found by turning around v
-    // through kept faces, away from the hole, to the first open half-edge leaving v. So two
-    // holes may touch at a vertex; a cycle that passes twice through a vertex is split there
-    // into loops.
-    std::vector<std::vector<std::size_t>> cycles;
-    std::vector<std::size_t> group_of_cycle;
+  // Cycles. The open half-edge after h, which ends at v, is found by turning around v
+  // through kept faces, away from the hole, to the first open half-edge leaving v. So two
+  // holes may touch at a vertex; a cycle that passes twice through a vertex is split there
+  // into loops, appended to `cycles` with their group. A chain that does not close widens.
+  void trace_cycles(const std::vector<std::size_t>& to_trace, std::vector<std::vector<std::size_t>>& cycles,
+                    std::vector<std::size_t>& group_of_cycle)
+  {
     std::vector<std::size_t> cycle;
     // The successors first, each independent of the others, so that the cache misses of
     // their walks overlap (following a cycle makes each walk wait for the one before); a
@@ -547,11 +612,15 @@ private:
                                  scratch_loop_, [&](auto first, auto last) { cycles.emplace_back(first, last); });
       group_of_cycle.resize(cycles.size(), groups_++);
     }
+  }
 
-    // Each loop is classified at its lowest-leftmost vertex, where a simple loop turns the
-    // way it winds: clockwise loops are holes, filled by ear clipping; counterclockwise ones
-    // are the outer boundary (when it is open) or islands, kept faces hanging by one vertex
-    // or lying over others, carved. A misjudged non-simple loop only fails the final check.
+  // Each loop is classified at its lowest-leftmost vertex, where a simple loop turns the
+  // way it winds: clockwise loops are holes, filled by ear clipping; counterclockwise ones
+  // are the outer boundary (when it is open) or islands, kept faces hanging by one vertex
+  // or lying over others, carved. A misjudged non-simple loop only fails the final check.
+  Outcome classify_loops(std::vector<std::vector<std::size_t>>& cycles, const std::vector<std::size_t>& group_of_cycle,
+                         const Carve_limits& limits)
+  {
     auto orientation = tr_.geom_traits().orientation_2_object();
     for(std::size_t c = 0; c < cycles.size(); ++c) {
       Loop loop;
@@ -573,44 +642,44 @@ private:
         loop_of_[h] = loops_.size();
       loops_.push_back(std::move(loop));
     }
+    return Outcome::ok;
+  }
 
-    // The outer loop: the counterclockwise loop with the lowest-leftmost vertex of all. An
-    // island may hang at that very vertex: then the outer loop is the one enclosing the
-    // larger area (the island lies inside it). Taken by the order of the loops (of face
-    // addresses), an island could pass for the outer loop and make the real one an island,
-    // carved layer by layer past the budget.
+  // The outer loop (outer_): the counterclockwise loop with the lowest-leftmost vertex of
+  // all; returns whether there is one. An island may hang at that very vertex: then the
+  // outer loop is the one enclosing the larger area (the island lies inside it). Taken by
+  // the order of the loops (of face addresses), an island could pass for the outer loop and
+  // make the real one an island, carved layer by layer past the budget.
+  bool choose_outer_loop()
+  {
     auto compare_xy = tr_.geom_traits().compare_xy_2_object();
-    outer_ = none;
-    if(outer_is_open) {
-      for(std::size_t l = 0; l < loops_.size(); ++l) {
-        const Loop& loop = loops_[l];
-        if(loop.dead || loop.turn != LEFT_TURN)
-          continue;
-        if(outer_ == none) {
-          outer_ = l;
-          continue;
-        }
-        const Comparison_result c = compare_xy(tail_point(loop.halfedges[loop.lowest]),
-                                               tail_point(loops_[outer_].halfedges[loops_[outer_].lowest]));
-        if(c == SMALLER ||
-           (c == EQUAL && encloses_more(loop.halfedges, loops_[outer_].halfedges, tail_point(loop.halfedges[loop.lowest]))))
-          outer_ = l;
+    for(std::size_t l = 0; l < loops_.size(); ++l) {
+      const Loop& loop = loops_[l];
+      if(loop.dead || loop.turn != LEFT_TURN)
+        continue;
+      if(outer_ == none) {
+        outer_ = l;
+        continue;
       }
-      if(outer_ == none)
-        return Outcome::outer_boundary_not_ccw;
-      // A flap of faces folded over others and glued to them edge by edge shows only in the
-      // outer loop, which then winds twice: it must be a simple polygon (every other loop
-      // winds at most once, so the faces then cover each point at most once).
-      if(carve_crossings(loops_[outer_].halfedges))
-        return Outcome::ok; // widened: traced again next round
+      const Comparison_result c = compare_xy(tail_point(loop.halfedges[loop.lowest]),
+                                             tail_point(loops_[outer_].halfedges[loops_[outer_].lowest]));
+      if(c == SMALLER ||
+         (c == EQUAL && encloses_more(loop.halfedges, loops_[outer_].halfedges, tail_point(loop.halfedges[loop.lowest]))))
+        outer_ = l;
     }
+    return outer_ != none;
+  }
+
+  // The counterclockwise loops other than the outer one are islands: their faces go, layer
+  // by layer (the importer's faces may then meet at a vertex in several fans).
+  void carve_islands()
+  {
     for(std::size_t l = 0; l < loops_.size(); ++l)
       if(!loops_[l].dead && l != outer_ && loops_[l].turn == LEFT_TURN) {
         widen(loops_[l].halfedges, false); // an island: its faces go, layer by layer
         if(given_open_.size() > 0)
           may_have_several_fans_ = true;
       }
-    return Outcome::ok;
   }
 
   // Finds the pairs of edges of a loop that meet other than at a shared end (the loop is not
@@ -628,22 +697,17 @@ private:
     std::vector<const Point*> p(m);
     for(std::size_t k = 0; k < m; ++k)
       p[k] = &tail_point(loop[k]);
-    double xmin = CGAL::to_double(p[0]->x()), xmax = xmin, ymin = CGAL::to_double(p[0]->y()), ymax = ymin;
-    for(const Point* q : p) {
-      xmin = (std::min)(xmin, CGAL::to_double(q->x()));
-      xmax = (std::max)(xmax, CGAL::to_double(q->x()));
-      ymin = (std::min)(ymin, CGAL::to_double(q->y()));
-      ymax = (std::max)(ymax, CGAL::to_double(q->y()));
-    }
+    const Box box = bounding_box(m, [&](std::size_t k) -> const Point& { return *p[k]; });
     const std::size_t side = (std::max)(std::size_t(1), std::size_t(std::sqrt(double(m))));
     // Boxes widened by far more than the rounding of to_double (relative to the coordinates,
-    // plus the smallest subnormal); cells by Grid_axis, finite at any scale. Only which pairs
+    // plus the smallest subnormal); cells by Cell_grid, finite at any scale. Only which pairs
     // are tested depends on this: a pair that meets shares a cell, the tests are exact.
-    const double largest = (std::max)((std::max)(std::fabs(xmin), std::fabs(xmax)), (std::max)(std::fabs(ymin), std::fabs(ymax)));
-    const double margin = 1e-9 * (xmax / 2 - xmin / 2 + ymax / 2 - ymin / 2) + 1e-15 * largest +
+    const double largest = (std::max)((std::max)(std::fabs(box.xmin), std::fabs(box.xmax)),
+                                      (std::max)(std::fabs(box.ymin), std::fabs(box.ymax)));
+    const double margin = 1e-9 * (box.xmax / 2 - box.xmin / 2 + box.ymax / 2 - box.ymin / 2) + 1e-15 * largest +
                           std::numeric_limits<double>::denorm_min();
-    const Grid_axis column(xmin, xmax, side), row(ymin, ymax, side);
-    std::vector<std::vector<std::size_t>> grid(side * side);
+    const Cell_grid cells(box, side, side);
+    std::vector<std::vector<std::size_t>> grid(cells.cells());
     for(std::size_t k = 0; k < m; ++k) {
       const Point& a = *p[k];
       const Point& b = *p[(k + 1) % m];
@@ -651,8 +715,8 @@ private:
       const double x1 = (std::max)(CGAL::to_double(a.x()), CGAL::to_double(b.x())) + margin;
       const double y0 = (std::min)(CGAL::to_double(a.y()), CGAL::to_double(b.y())) - margin;
       const double y1 = (std::max)(CGAL::to_double(a.y()), CGAL::to_double(b.y())) + margin;
-      for(std::size_t cx = column(x0); cx <= column(x1); ++cx)
-        for(std::size_t cy = row(y0); cy <= row(y1); ++cy)
+      for(std::size_t cx = cells.column(x0); cx <= cells.column(x1); ++cx)
+        for(std::size_t cy = cells.row(y0); cy <= cells.row(y1); ++cy)
           grid[cy * side + cx].push_back(k);
     }
     // Closed segments [a, b] and [c, d] meet.
@@ -1030,39 +1094,6 @@ Outcome carve_and_reinsert(Carve_repair<Triangulation>& carve, Triangulation& tr
   stats.faces_carved = carve.faces_removed();
   stats.holes_refilled = carve.holes();
   stats.points_reinserted = carve.detached().size();
-  return Outcome::ok;
-}
-
-// make_delaunay's whole local repair of faces that are not counterclockwise:
-// carve_and_reinsert(), then Lawson's flips. Returns Outcome::ok on success; otherwise why not,
-// with `tr` either as carve_and_reinsert() leaves it or, when the flip budget ran out, a valid
-// triangulation of the same vertices. With `parallel`, the flips run on TBB's threads
-// (lawson_flip()). `visitor` is told of Stage::carve and Stage::flips (visitor.h).
-template <class Triangulation, class Visitor = Default_visitor>
-Outcome carve_in_place(Triangulation& tr, const std::vector<typename Triangulation::Face_handle>& bad,
-                       std::vector<std::pair<typename Triangulation::Face_handle, int>>& stack,
-                       std::vector<typename Triangulation::Face_handle>& touched,
-                       Flip_log<Triangulation>& flip_log, std::size_t max_flips, Statistics& stats,
-                       bool parallel = false, Visitor&& visitor = Visitor())
-{
-  Carve_repair<Triangulation> carve(tr, true);
-  std::vector<const void*> modified;
-  visitor.stage_begin(Stage::carve);
-  const Outcome why = carve_and_reinsert(carve, tr, bad, stack, flip_log, modified, stats);
-  visitor.stage_end(Stage::carve);
-  if(why != Outcome::ok)
-    return why;
-  visitor.stage_begin(Stage::flips);
-  const bool flipped = lawson_flip(tr, stack, max_flips, stats.flips, touched, parallel);
-  visitor.stage_end(Stage::flips);
-  if(!flipped)
-    return Outcome::flip_budget_exhausted;
-  // The predicted faces modified: those flipped (before the carve or after it) that were
-  // neither carved nor made by the repair, and those insertion split.
-  stats.faces_certified =
-      stats.faces_in - stats.faces_carved -
-      count_distinct_addresses<typename Triangulation::Face>(
-          modified, touched, 0, [&](const void* f) { return !carve.is_removed(f) && !carve.is_created(f); });
   return Outcome::ok;
 }
 

@@ -7,7 +7,7 @@
 //   repair), seeded only with the edges certification found not locally Delaunay;
 //   delaunay_from_prediction runs it on the triangulation it exported, make_delaunay on the
 //   caller's own, certification (tds_certify.h) on the fly; on TBB's threads, in the cells of
-//   a grid (Flip_cells), lawson_flip_in_cells();
+//   a grid (make_flip_cells()), flip_in_cells();
 // - flip_around_new_vertex(): the flips of one incremental insertion (insertion.h);
 // - untangle_by_flips(): the flips that undo a vertex crossing an edge (make_delaunay after
 //   moves, before any carving), on TBB's threads in the same cells;
@@ -26,9 +26,9 @@
 #define CGAL_DELAUNAY_FROM_PREDICTION_INTERNAL_REPAIR_FLIPS_H
 
 #include <CGAL/Delaunay_from_prediction/internal/toolbox/concurrency.h>
+#include <CGAL/Delaunay_from_prediction/internal/toolbox/counting_sort.h>
 #include <CGAL/Delaunay_from_prediction/internal/toolbox/grid.h>
 #include <CGAL/Delaunay_from_prediction/internal/toolbox/predicates.h>
-#include <CGAL/Delaunay_from_prediction/internal/import/spatial_order.h>
 
 #include <algorithm>
 #include <atomic>
@@ -193,29 +193,15 @@ bool flip_edges_while(Triangulation& tr,
   return true;
 }
 
-// The cells of the tasks that flip on TBB's threads (lawson_flip_in_cells(),
-// untangle_by_flips()): a grid of side x side cells over the box of the finite vertices of a
-// sample of the faces the tasks start from (points outside it fall in the border cells).
-// Which cell a point is in only steers (Grid_axis: no overflow, no NaN): the tasks' results
-// do not depend on it.
-struct Flip_cells
-{
-  std::size_t side = 0, cells = 0;
-  Grid_axis column, row;
-
-  template <class Point>
-  std::size_t operator()(const Point& p) const
-  {
-    return row(CGAL::to_double(p.y())) * side + column(CGAL::to_double(p.x()));
-  }
-};
-
-// Flip_cells for the faces face_at(0..m-1), about `per_cell` of them a cell, 4 to 256 cells:
-// few enough that most flips are inside a cell, enough for TBB to balance the threads. False
-// when the sample has no finite vertex.
+// The cells of the tasks that flip on TBB's threads (flip_in_cells(), untangle_by_flips()),
+// for the faces face_at(0..m-1) they start from: a grid of side x side cells over the box of
+// the finite vertices of a sample of the faces, about `per_cell` faces a cell, 4 to 256
+// cells: few enough that most flips are inside a cell, enough for TBB to balance the threads.
+// Which cell a point is in only steers: the tasks' results do not depend on it. False when
+// the sample has no finite vertex.
 template <class Vertex_handle, class FaceAt>
 bool make_flip_cells(std::size_t m, const FaceAt& face_at, Vertex_handle infinite, std::size_t per_cell,
-                     Flip_cells& out)
+                     Cell_grid& out)
 {
   Box box;
   const std::size_t stride = (std::max)(std::size_t(1), m / 4096);
@@ -228,10 +214,9 @@ bool make_flip_cells(std::size_t m, const FaceAt& face_at, Vertex_handle infinit
     }
   if(box.is_empty())
     return false;
-  out.side = (std::min)(std::size_t(16), (std::max)(std::size_t(2), std::size_t(std::sqrt(double(m) / double(per_cell)))));
-  out.cells = out.side * out.side;
-  out.column = Grid_axis(box.xmin, box.xmax, out.side);
-  out.row = Grid_axis(box.ymin, box.ymax, out.side);
+  const std::size_t side =
+      (std::min)(std::size_t(16), (std::max)(std::size_t(2), std::size_t(std::sqrt(double(m) / double(per_cell)))));
+  out = Cell_grid(box, side, side);
   return true;
 }
 
@@ -251,14 +236,14 @@ bool make_flip_cells(std::size_t m, const FaceAt& face_at, Vertex_handle infinit
 // face ccw.
 //
 // With `parallel` (CGAL::Parallel_tag), and at least min_edges_to_flip_in_cells candidate
-// edges, the flips run in cells on TBB's threads first: lawson_flip_in_cells() below.
+// edges, the flips run in cells on TBB's threads first (flip_in_cells() below); the loop on
+// this thread then ends the work, from the edges the cells left.
 constexpr std::size_t min_edges_to_flip_in_cells = 64;
 
 template <class Triangulation>
-bool lawson_flip_in_cells(Triangulation& tr,
-                          std::vector<std::pair<typename Triangulation::Face_handle, int>>& stack,
-                          std::size_t max_flips, std::size_t& flips,
-                          std::vector<typename Triangulation::Face_handle>& touched);
+bool flip_in_cells(Triangulation& tr, std::vector<std::pair<typename Triangulation::Face_handle, int>>& stack,
+                   std::size_t max_flips, std::size_t& flips,
+                   std::vector<typename Triangulation::Face_handle>& touched);
 
 template <class Triangulation>
 bool lawson_flip(Triangulation& tr,
@@ -266,8 +251,8 @@ bool lawson_flip(Triangulation& tr,
                  std::size_t max_flips, std::size_t& flips,
                  std::vector<typename Triangulation::Face_handle>& touched, bool parallel = false)
 {
-  if(parallel && stack.size() >= min_edges_to_flip_in_cells)
-    return lawson_flip_in_cells(tr, stack, max_flips, flips, touched);
+  if(parallel && stack.size() >= min_edges_to_flip_in_cells && !flip_in_cells(tr, stack, max_flips, flips, touched))
+    return false;
   using Gt = typename Triangulation::Geom_traits;
   const Gt& gt = tr.geom_traits();
   auto not_locally_delaunay = [&gt](const auto&, int, const auto& a, const auto& b, const auto& c,
@@ -279,7 +264,8 @@ bool lawson_flip(Triangulation& tr,
 // Lawson's algorithm on TBB's threads. The vertices are given to the cells of a grid over the
 // box of the candidate edges' faces, by their points (which flips never change); the task of
 // a cell flips only the edges whose four quadrilateral vertices lie in it, and leaves the
-// others to lawson_flip() after all tasks, which ends the work in order.
+// others on `stack`, for lawson_flip()'s loop on this thread, which ends the work in order.
+// Returns false when the budget ran out.
 //
 // Why the tasks do not race. A face keeps its vertices until it is flipped, and a task flips
 // only faces with all three vertices in its cell; so a face with two vertices in cell c keeps
@@ -299,10 +285,9 @@ bool lawson_flip(Triangulation& tr,
 // add their flips to a shared count every 256 flips and stop when it passes `max_flips`.
 
 template <class Triangulation>
-bool lawson_flip_in_cells(Triangulation& tr,
-                          std::vector<std::pair<typename Triangulation::Face_handle, int>>& stack,
-                          std::size_t max_flips, std::size_t& flips,
-                          std::vector<typename Triangulation::Face_handle>& touched)
+bool flip_in_cells(Triangulation& tr, std::vector<std::pair<typename Triangulation::Face_handle, int>>& stack,
+                   std::size_t max_flips, std::size_t& flips,
+                   std::vector<typename Triangulation::Face_handle>& touched)
 {
   using Face_handle = typename Triangulation::Face_handle;
   using Vertex_handle = typename Triangulation::Vertex_handle;
@@ -313,10 +298,11 @@ bool lawson_flip_in_cells(Triangulation& tr,
   const std::size_t m = stack.size();
 
   // Cells of about 1024 candidate edges.
-  Flip_cells cell_of;
-  if(!make_flip_cells(m, [&](std::size_t k) { return stack[k].first; }, infinite, 1024, cell_of))
-    return lawson_flip(tr, stack, max_flips, flips, touched);
-  const std::size_t cells = cell_of.cells;
+  Cell_grid grid;
+  if(!make_flip_cells(m, [&](std::size_t k) { return stack[k].first; }, infinite, 1024, grid))
+    return true; // no finite vertex in the sample: all left to the loop on this thread
+  const std::size_t cells = grid.cells();
+  const auto cell_of = [&grid](const auto& p) { return grid.cell_of(p); };
   // Each candidate edge goes to the cell of its face's first vertex, or, if the face is
   // infinite, to the last bucket, `cells` (hull edges are never flipped). Its task keeps it
   // if the face's other vertices and the vertex across the edge are in the cell too, and
@@ -402,7 +388,7 @@ bool lawson_flip_in_cells(Triangulation& tr,
   stack.assign(sorted.begin() + end[cells - 1], sorted.end());
   for(const std::vector<Edge>& d : deferred)
     stack.insert(stack.end(), d.begin(), d.end());
-  return lawson_flip(tr, stack, max_flips, flips, touched);
+  return true;
 }
 
 // Undoes the logged flips (certification's, untangle_by_flips()'s), latest first.
@@ -462,9 +448,9 @@ void flip_around_new_vertex(Triangulation& tr, typename Triangulation::Vertex_ha
 //
 // With `parallel` (CGAL::Parallel_tag) and at least min_faces_to_untangle_in_cells bad faces,
 // the faces are untangled in cells on TBB's threads first, as Lawson's flips are
-// (lawson_flip_in_cells()): a cell's task takes a bad face when its three vertices and the
+// (flip_in_cells()): a cell's task takes a bad face when its three vertices and the
 // vertices across its finite edges are in the cell, and leaves the others to a final pass in
-// order. The argument of lawson_flip_in_cells() says why the tasks do not race (the test for
+// order. The argument of flip_in_cells() says why the tasks do not race (the test for
 // an existing edge (a, d) turns around a, in the cell, through the faces' slots across edges
 // at a, which no other task writes). The logs of the cells are joined in cell order: flips of
 // different cells write disjoint slots, so undoing them latest first restores `tr` as well.
@@ -554,14 +540,15 @@ void untangle_by_flips(Triangulation& tr, std::vector<typename Triangulation::Fa
   using Edge = std::pair<Face_handle, int>;
   const auto everywhere = [](Vertex_handle) { return true; };
   std::vector<Face_handle> deferred;
-  Flip_cells cell_of;
+  Cell_grid grid;
   if(parallel && bad.size() >= min_faces_to_untangle_in_cells &&
-     make_flip_cells(bad.size(), [&](std::size_t k) { return bad[k]; }, tr.infinite_vertex(), 256, cell_of)) {
+     make_flip_cells(bad.size(), [&](std::size_t k) { return bad[k]; }, tr.infinite_vertex(), 256, grid)) {
+    const auto cell_of = [&grid](const auto& p) { return grid.cell_of(p); };
     // Bad faces are finite: each goes to the cell of its first vertex.
     std::vector<Face_handle> sorted(bad.size());
     std::vector<std::uint32_t> end;
     counting_sort(
-        bad.size(), cell_of.cells, [&](std::size_t k) { return cell_of(bad[k]->vertex(0)->point()); },
+        bad.size(), grid.cells(), [&](std::size_t k) { return cell_of(bad[k]->vertex(0)->point()); },
         [&](std::size_t k) { return bad[k]; },
         [&](std::size_t position, Face_handle f) { sorted[position] = f; }, true, end);
     struct Cell_output
@@ -570,8 +557,8 @@ void untangle_by_flips(Triangulation& tr, std::vector<typename Triangulation::Fa
       std::vector<Edge> stack;
       Flip_log<Triangulation> log;
     };
-    std::vector<Cell_output> out(cell_of.cells);
-    for_each_block(true, cell_of.cells, [&](std::size_t cell) {
+    std::vector<Cell_output> out(grid.cells());
+    for_each_block(true, grid.cells(), [&](std::size_t cell) {
       Cell_output& o = out[cell];
       untangle_faces(tr, sorted, cell == 0 ? 0 : end[cell - 1], end[cell], false,
                      [&](Vertex_handle v) { return v != tr.infinite_vertex() && cell_of(v->point()) == cell; },

@@ -143,190 +143,31 @@ public:
   // null when commit() can run, otherwise why not (then `tr` is untouched).
   Outcome plan(std::size_t max_cost)
   {
-    const std::size_t F = faces_.size();
-    // 1. B and V_B.
-    std::size_t faces_in_bad_regions = 0;
-    for(std::size_t k = 0; k < F; ++k)
-      faces_in_bad_regions += region_[k] != outside ? bad_region_[region_[k]] : 0;
+    const std::size_t faces_in_bad_regions = count_faces_in_bad_regions();
     if(faces_in_bad_regions == 0)
       return Outcome::ok; // nothing marked (a hull that is not convex was): nothing to repair
-    is_boundary_.assign(F, 0);
-    for(std::size_t k = 0; k < F; ++k) {
-      if(region_[k] == outside)
-        continue;
-      for(int i = 0; i < 3; ++i)
-        if(region_[neighbor_[3 * k + i]] != region_[k]) {
-          is_boundary_[k] = 1;
-          break;
-        }
-    }
-    vb_of_.assign(vertex_index_.size(), none);
-    for(std::size_t k = 0; k < F; ++k)
-      if(is_boundary_[k])
-        for(int i = 0; i < 3; ++i) {
-          const Vertex_handle v = faces_[k]->vertex(i);
-          std::uint32_t& at = vb_of_[vertex_index_.of(v)];
-          if(at == none) {
-            at = std::uint32_t(vb_.size());
-            vb_.push_back(v);
-          }
-        }
+    collect_boundary();
     if(vb_.size() + faces_in_bad_regions > max_cost)
       return Outcome::bad_regions_too_large;
-
-    // 2. DT(V_B), CGAL's insertion (spatially sorted).
-    {
-      std::vector<std::pair<Point, std::uint32_t>> points;
-      points.reserve(vb_.size());
-      for(std::size_t k = 0; k < vb_.size(); ++k)
-        points.emplace_back(vb_[k]->point(), std::uint32_t(k));
-      boundary_dt_.insert(points.begin(), points.end());
-    }
-    if(boundary_dt_.number_of_vertices() != vb_.size())
-      return Outcome::duplicate_points;
-    if(boundary_dt_.dimension() != 2)
-      return Outcome::boundary_vertices_collinear;
-    dt_vertex_.assign(vb_.size(), Dt_vertex());
-    for(auto v = boundary_dt_.finite_vertices_begin(); v != boundary_dt_.finite_vertices_end(); ++v)
-      dt_vertex_[v->info()] = v;
-
-    // 3. Good regions: their faces in B are faces of DT(V_B), their hull edges hull edges.
-    image_.assign(F, Dt_face());
-    for(std::size_t k = 0; k < F; ++k) {
-      if(!is_boundary_[k] || bad_region_[region_[k]])
-        continue;
-      const Face_handle f = faces_[k];
-      Dt_face image;
-      if(!boundary_dt_.is_face(dt_of(f->vertex(0)), dt_of(f->vertex(1)), dt_of(f->vertex(2)), image)) {
-        bad_region_[region_[k]] = 1;
-        continue;
-      }
-      image_[k] = image;
-      for(int i = 0; i < 3; ++i)
-        if(f->neighbor(i)->has_vertex(infinite_) &&
-           !boundary_dt_.is_infinite(image->neighbor(image->index(dt_of(f->vertex(i))))))
-          bad_region_[region_[k]] = 1;
-    }
-
-    // 4. What goes: the faces of bad regions, and the infinite faces outside them.
-    removed_.assign(F, 0);
+    const Outcome built = build_boundary_dt();
+    if(built != Outcome::ok)
+      return built;
+    certify_boundary_faces();
+    // 1: a vertex of a kept face, 2: a vertex of removed faces only, listed.
     std::vector<char> kept_vertex(vertex_index_.size(), 0);
-    std::size_t kept_faces = 0;
-    for(std::size_t k = 0; k < F; ++k) {
-      const Face_handle f = faces_[k];
-      if(region_[k] == outside) {
-        removed_[k] = bad_region_[region_[neighbor_[3 * k + f->index(infinite_)]]];
-        continue;
-      }
-      removed_[k] = bad_region_[region_[k]];
-      if(!removed_[k]) {
-        ++kept_faces;
-        for(int i = 0; i < 3; ++i)
-          kept_vertex[vertex_index_.of(f->vertex(i))] = 1;
-      }
-    }
-    if(kept_faces == 0)
+    if(!mark_removed_faces(kept_vertex))
       return Outcome::every_region_bad;
-    std::size_t removed_boundary_vertices = 0;
-    for(std::size_t k = 0; k < F; ++k) {
-      if(!removed_[k])
-        continue;
-      if(region_[k] != outside)
-        ++removed_finite_;
-      for(int i = 0; i < 3; ++i) {
-        const Vertex_handle v = faces_[k]->vertex(i);
-        if(v == infinite_)
-          continue;
-        char& kept = kept_vertex[vertex_index_.of(v)];
-        if(kept)
-          continue;
-        kept = 2; // listed
-        if(vb_of_[vertex_index_.of(v)] == none)
-          detached_.push_back(v);
-        else
-          ++removed_boundary_vertices;
-      }
-    }
+    const std::size_t removed_boundary_vertices = list_detached_vertices(kept_vertex);
     if(vb_.size() + 4 * detached_.size() > max_cost)
       return Outcome::bad_regions_too_large;
-
-    // 5. Mark the images of the kept faces of B and of the kept infinite faces.
-    dt_index_.reset(new Dt_index(boundary_dt_.tds().faces()));
-    const Dt_index& dt_index = *dt_index_;
-    // The kept faces that may border a hole: kept faces of B and kept infinite faces.
     std::vector<std::pair<std::uint32_t, Dt_face>> border;
-    for(std::size_t k = 0; k < F; ++k)
-      if(!removed_[k] && (region_[k] == outside || is_boundary_[k]))
-        border.emplace_back(std::uint32_t(k), image_of(k));
-    owner_.assign(dt_index.size(), none);
-    for(const auto& b : border) {
-      std::uint32_t& owner = owner_[dt_index.of(b.second)];
-      if(owner != none)
-        return Outcome::kept_faces_repeated;
-      owner = b.first;
-    }
-
-    // 6. The fill: flood DT(V_B) from across every hole edge, never entering a marked face.
-    in_fill_.assign(dt_index.size(), none);
-    std::size_t hole_edges = 0, contacts = 0;
-    for(const auto& b : border) {
-      const Face_handle f = faces_[b.first];
-      for(int i = 0; i < 3; ++i) {
-        if(!removed_[neighbor_[3 * b.first + i]])
-          continue;
-        ++hole_edges;
-        const Dt_face across = b.second->neighbor(b.second->index(dt_of(f->vertex(i))));
-        const std::size_t ai = dt_index.of(across);
-        if(owner_[ai] != none)
-          return Outcome::kept_faces_do_not_fit;
-        if(in_fill_[ai] != none)
-          continue;
-        ++holes_;
-        in_fill_[ai] = std::uint32_t(fill_.size());
-        fill_.push_back(across);
-        for(std::size_t head = fill_.size() - 1; head < fill_.size(); ++head)
-          for(int j = 0; j < 3; ++j) {
-            const Dt_face g = fill_[head]->neighbor(j);
-            const std::size_t gi = dt_index.of(g);
-            if(owner_[gi] != none)
-              ++contacts;
-            else if(in_fill_[gi] == none) {
-              in_fill_[gi] = std::uint32_t(fill_.size());
-              fill_.push_back(g);
-            }
-          }
-      }
-    }
-    // Every hole edge leads to a contact, distinct ones to distinct contacts: equal counts
-    // mean the fill meets the kept faces only at hole edges.
-    if(contacts != hole_edges)
-      return Outcome::kept_faces_do_not_fit;
-
-    // 7. Vertices of the fill: one that lost all its faces must have its whole star in DT(V_B)
-    // in the fill; one that kept faces must touch a kept face there (be on a hole's boundary);
-    // and every boundary vertex that lost its faces must be in the fill.
-    std::vector<char> seen(vb_.size(), 0);
-    std::size_t removed_seen = 0;
-    for(const Dt_face d : fill_)
-      for(int i = 0; i < 3; ++i) {
-        const Dt_vertex w = d->vertex(i);
-        if(boundary_dt_.is_infinite(w) || seen[w->info()])
-          continue;
-        seen[w->info()] = 1;
-        const bool kept = kept_vertex[vertex_index_.of(vb_[w->info()])] == 1;
-        bool touches_kept = false, star_in_fill = true;
-        auto g = boundary_dt_.incident_faces(w), end = g;
-        do {
-          const std::size_t gi = dt_index.of(g);
-          touches_kept = touches_kept || owner_[gi] != none;
-          star_in_fill = star_in_fill && in_fill_[gi] != none;
-        } while(++g != end);
-        if(kept ? !touches_kept : !star_in_fill)
-          return Outcome::kept_faces_do_not_fit;
-        removed_seen += kept ? 0 : 1;
-      }
-    if(removed_seen != removed_boundary_vertices)
-      return Outcome::kept_faces_do_not_fit;
+    Outcome why = mark_kept_images(border);
+    if(why == Outcome::ok)
+      why = flood_fill(border);
+    if(why == Outcome::ok)
+      why = check_fill_vertices(kept_vertex, removed_boundary_vertices);
+    if(why != Outcome::ok)
+      return why;
     planned_ = true;
     return Outcome::ok;
   }
@@ -481,6 +322,230 @@ private:
       if(region_[k] != outside)
         region_[k] = label[find(region_[k])];
     bad_region_.assign(regions, 0);
+  }
+
+  // --- Stages of plan(). -------------------------------------------------------------------
+
+  // The finite faces of the bad regions: none means nothing to repair.
+  std::size_t count_faces_in_bad_regions() const
+  {
+    std::size_t count = 0;
+    for(std::size_t k = 0; k < faces_.size(); ++k)
+      count += region_[k] != outside ? bad_region_[region_[k]] : 0;
+    return count;
+  }
+
+  // B (the faces with a neighbour in another region or outside the hull) and V_B, its
+  // vertices in the order of B's faces.
+  void collect_boundary()
+  {
+    const std::size_t F = faces_.size();
+    is_boundary_.assign(F, 0);
+    for(std::size_t k = 0; k < F; ++k) {
+      if(region_[k] == outside)
+        continue;
+      for(int i = 0; i < 3; ++i)
+        if(region_[neighbor_[3 * k + i]] != region_[k]) {
+          is_boundary_[k] = 1;
+          break;
+        }
+    }
+    vb_of_.assign(vertex_index_.size(), none);
+    for(std::size_t k = 0; k < F; ++k)
+      if(is_boundary_[k])
+        for(int i = 0; i < 3; ++i) {
+          const Vertex_handle v = faces_[k]->vertex(i);
+          std::uint32_t& at = vb_of_[vertex_index_.of(v)];
+          if(at == none) {
+            at = std::uint32_t(vb_.size());
+            vb_.push_back(v);
+          }
+        }
+  }
+
+  // DT(V_B) by CGAL's insertion (spatially sorted); fails on repeated or collinear points.
+  Outcome build_boundary_dt()
+  {
+    {
+      std::vector<std::pair<Point, std::uint32_t>> points;
+      points.reserve(vb_.size());
+      for(std::size_t k = 0; k < vb_.size(); ++k)
+        points.emplace_back(vb_[k]->point(), std::uint32_t(k));
+      boundary_dt_.insert(points.begin(), points.end());
+    }
+    if(boundary_dt_.number_of_vertices() != vb_.size())
+      return Outcome::duplicate_points;
+    if(boundary_dt_.dimension() != 2)
+      return Outcome::boundary_vertices_collinear;
+    dt_vertex_.assign(vb_.size(), Dt_vertex());
+    for(auto v = boundary_dt_.finite_vertices_begin(); v != boundary_dt_.finite_vertices_end(); ++v)
+      dt_vertex_[v->info()] = v;
+    return Outcome::ok;
+  }
+
+  // Good regions: their faces in B are faces of DT(V_B), their hull edges hull edges; a
+  // region failing either is bad. Records the image of each face of B in a good region.
+  void certify_boundary_faces()
+  {
+    const std::size_t F = faces_.size();
+    image_.assign(F, Dt_face());
+    for(std::size_t k = 0; k < F; ++k) {
+      if(!is_boundary_[k] || bad_region_[region_[k]])
+        continue;
+      const Face_handle f = faces_[k];
+      Dt_face image;
+      if(!boundary_dt_.is_face(dt_of(f->vertex(0)), dt_of(f->vertex(1)), dt_of(f->vertex(2)), image)) {
+        bad_region_[region_[k]] = 1;
+        continue;
+      }
+      image_[k] = image;
+      for(int i = 0; i < 3; ++i)
+        if(f->neighbor(i)->has_vertex(infinite_) &&
+           !boundary_dt_.is_infinite(image->neighbor(image->index(dt_of(f->vertex(i))))))
+          bad_region_[region_[k]] = 1;
+    }
+  }
+
+  // What goes: the faces of bad regions, and the infinite faces outside them. Marks the
+  // vertices of kept faces in `kept_vertex`; returns whether any finite face is kept.
+  bool mark_removed_faces(std::vector<char>& kept_vertex)
+  {
+    const std::size_t F = faces_.size();
+    removed_.assign(F, 0);
+    std::size_t kept_faces = 0;
+    for(std::size_t k = 0; k < F; ++k) {
+      const Face_handle f = faces_[k];
+      if(region_[k] == outside) {
+        removed_[k] = bad_region_[region_[neighbor_[3 * k + f->index(infinite_)]]];
+        continue;
+      }
+      removed_[k] = bad_region_[region_[k]];
+      if(!removed_[k]) {
+        ++kept_faces;
+        for(int i = 0; i < 3; ++i)
+          kept_vertex[vertex_index_.of(f->vertex(i))] = 1;
+      }
+    }
+    return kept_faces != 0;
+  }
+
+  // Lists the vertices of removed faces that keep no face: outside V_B they are V_bad
+  // (detached_), in V_B they must reappear in the fill. Returns how many are in V_B.
+  std::size_t list_detached_vertices(std::vector<char>& kept_vertex)
+  {
+    std::size_t removed_boundary_vertices = 0;
+    for(std::size_t k = 0; k < faces_.size(); ++k) {
+      if(!removed_[k])
+        continue;
+      if(region_[k] != outside)
+        ++removed_finite_;
+      for(int i = 0; i < 3; ++i) {
+        const Vertex_handle v = faces_[k]->vertex(i);
+        if(v == infinite_)
+          continue;
+        char& kept = kept_vertex[vertex_index_.of(v)];
+        if(kept)
+          continue;
+        kept = 2; // listed
+        if(vb_of_[vertex_index_.of(v)] == none)
+          detached_.push_back(v);
+        else
+          ++removed_boundary_vertices;
+      }
+    }
+    return removed_boundary_vertices;
+  }
+
+  // Marks the images of the kept faces of B and of the kept infinite faces (`border`, the
+  // kept faces that may border a hole) as owned by them; two on one image cannot both stay.
+  Outcome mark_kept_images(std::vector<std::pair<std::uint32_t, Dt_face>>& border)
+  {
+    dt_index_.reset(new Dt_index(boundary_dt_.tds().faces()));
+    const Dt_index& dt_index = *dt_index_;
+    for(std::size_t k = 0; k < faces_.size(); ++k)
+      if(!removed_[k] && (region_[k] == outside || is_boundary_[k]))
+        border.emplace_back(std::uint32_t(k), image_of(k));
+    owner_.assign(dt_index.size(), none);
+    for(const auto& b : border) {
+      std::uint32_t& owner = owner_[dt_index.of(b.second)];
+      if(owner != none)
+        return Outcome::kept_faces_repeated;
+      owner = b.first;
+    }
+    return Outcome::ok;
+  }
+
+  // The fill: floods DT(V_B) from across every hole edge, never entering a marked face, one
+  // hole per flood; fails unless the fill meets the kept faces exactly at the hole edges.
+  Outcome flood_fill(const std::vector<std::pair<std::uint32_t, Dt_face>>& border)
+  {
+    const Dt_index& dt_index = *dt_index_;
+    in_fill_.assign(dt_index.size(), none);
+    std::size_t hole_edges = 0, contacts = 0;
+    for(const auto& b : border) {
+      const Face_handle f = faces_[b.first];
+      for(int i = 0; i < 3; ++i) {
+        if(!removed_[neighbor_[3 * b.first + i]])
+          continue;
+        ++hole_edges;
+        const Dt_face across = b.second->neighbor(b.second->index(dt_of(f->vertex(i))));
+        const std::size_t ai = dt_index.of(across);
+        if(owner_[ai] != none)
+          return Outcome::kept_faces_do_not_fit;
+        if(in_fill_[ai] != none)
+          continue;
+        ++holes_;
+        in_fill_[ai] = std::uint32_t(fill_.size());
+        fill_.push_back(across);
+        for(std::size_t head = fill_.size() - 1; head < fill_.size(); ++head)
+          for(int j = 0; j < 3; ++j) {
+            const Dt_face g = fill_[head]->neighbor(j);
+            const std::size_t gi = dt_index.of(g);
+            if(owner_[gi] != none)
+              ++contacts;
+            else if(in_fill_[gi] == none) {
+              in_fill_[gi] = std::uint32_t(fill_.size());
+              fill_.push_back(g);
+            }
+          }
+      }
+    }
+    // Every hole edge leads to a contact, distinct ones to distinct contacts: equal counts
+    // mean the fill meets the kept faces only at hole edges.
+    if(contacts != hole_edges)
+      return Outcome::kept_faces_do_not_fit;
+    return Outcome::ok;
+  }
+
+  // Vertices of the fill: one that lost all its faces must have its whole star in DT(V_B)
+  // in the fill; one that kept faces must touch a kept face there (be on a hole's boundary);
+  // and every boundary vertex that lost its faces must be in the fill.
+  Outcome check_fill_vertices(const std::vector<char>& kept_vertex, std::size_t removed_boundary_vertices) const
+  {
+    const Dt_index& dt_index = *dt_index_;
+    std::vector<char> seen(vb_.size(), 0);
+    std::size_t removed_seen = 0;
+    for(const Dt_face d : fill_)
+      for(int i = 0; i < 3; ++i) {
+        const Dt_vertex w = d->vertex(i);
+        if(boundary_dt_.is_infinite(w) || seen[w->info()])
+          continue;
+        seen[w->info()] = 1;
+        const bool kept = kept_vertex[vertex_index_.of(vb_[w->info()])] == 1;
+        bool touches_kept = false, star_in_fill = true;
+        auto g = boundary_dt_.incident_faces(w), end = g;
+        do {
+          const std::size_t gi = dt_index.of(g);
+          touches_kept = touches_kept || owner_[gi] != none;
+          star_in_fill = star_in_fill && in_fill_[gi] != none;
+        } while(++g != end);
+        if(kept ? !touches_kept : !star_in_fill)
+          return Outcome::kept_faces_do_not_fit;
+        removed_seen += kept ? 0 : 1;
+      }
+    if(removed_seen != removed_boundary_vertices)
+      return Outcome::kept_faces_do_not_fit;
+    return Outcome::ok;
   }
 
   void mark_region_of(Face_handle f)

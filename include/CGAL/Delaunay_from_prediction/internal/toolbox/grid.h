@@ -3,9 +3,12 @@
 // Author(s): Delaunay_from_prediction founding team
 //
 // The package's one grid: bounding boxes, the scale that keeps double arithmetic finite at
-// any coordinates, and the cells of an axis, clamped. Used by the spatial order, the vertex
-// grid of hinted insertion, BrioDC's nearest-neighbour cells and the carve's crossing test.
-// Double arithmetic here only steers (which cell, which start): no result depends on it.
+// any coordinates, the cells of an axis, clamped, and the grid of cells over a box
+// (Cell_grid). Used by the spatial order, the vertex grid of hinted insertion, the cells of
+// the flips on several threads, the owner grid of the regions build, the carve's crossing
+// test and BrioDC's nearest-neighbour cells; points are bucketed into cells by
+// toolbox/counting_sort.h. Double arithmetic here only steers (which cell, which start): no
+// result depends on it.
 
 #ifndef CGAL_DELAUNAY_FROM_PREDICTION_INTERNAL_TOOLBOX_GRID_H
 #define CGAL_DELAUNAY_FROM_PREDICTION_INTERNAL_TOOLBOX_GRID_H
@@ -23,7 +26,6 @@ namespace CGAL {
 namespace Delaunay_from_prediction {
 namespace internal {
 
-// The bounding box of points 0..n-1 (n > 0), in double.
 // The bounding box of points in double coordinates, the one place it is computed. Empty (no
 // point added) until add() is called.
 struct Box
@@ -37,6 +39,13 @@ struct Box
     xmax = (std::max)(xmax, x);
     ymin = (std::min)(ymin, y);
     ymax = (std::max)(ymax, y);
+  }
+  void add(const Box& b)
+  {
+    xmin = (std::min)(xmin, b.xmin);
+    xmax = (std::max)(xmax, b.xmax);
+    ymin = (std::min)(ymin, b.ymin);
+    ymax = (std::max)(ymax, b.ymax);
   }
   bool is_empty() const { return !(xmin <= xmax && ymin <= ymax); }
 };
@@ -134,6 +143,31 @@ struct Grid_axis
   }
 
   std::size_t operator()(double x) const { return clamped_cell((x * scale - lo) * per_unit, cells); }
+};
+
+// A grid of columns x rows cells over a (non-empty) box, numbered row by row; points outside
+// the box fall in the border cells. Robust at any scale (Grid_axis). The one grid of the
+// package: every structure that buckets points into cells is made of it, but BrioDC's
+// nearest-neighbour cells, whose search needs the cells' sides in a frame normalized
+// beforehand (build/nearest_neighbour_graph.h).
+struct Cell_grid
+{
+  Grid_axis column, row;
+
+  Cell_grid() = default;
+  Cell_grid(const Box& box, std::size_t columns, std::size_t rows)
+      : column(box.xmin, box.xmax, columns), row(box.ymin, box.ymax, rows)
+  {}
+
+  std::size_t columns() const { return column.cells; }
+  std::size_t rows() const { return row.cells; }
+  std::size_t cells() const { return column.cells * row.cells; }
+  std::size_t operator()(double x, double y) const { return row(y) * column.cells + column(x); }
+  template <class Point>
+  std::size_t cell_of(const Point& p) const
+  {
+    return (*this)(CGAL::to_double(p.x()), CGAL::to_double(p.y()));
+  }
 };
 
 // Whether pairs of points (consecutive points of an order, the ends of edges) are about as

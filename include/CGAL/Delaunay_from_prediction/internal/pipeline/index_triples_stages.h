@@ -1,0 +1,321 @@
+// Copyright (c) 2026 Delaunay_from_prediction contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Author(s): Delaunay_from_prediction founding team
+//
+// The stages of the pipeline (prediction_pipeline.h) for delaunay_from_prediction(): a
+// prediction given as index triples, checked, imported with its certificate into a fresh
+// triangulation, repaired there, and swapped into the caller's only at the end.
+
+#ifndef CGAL_DELAUNAY_FROM_PREDICTION_INTERNAL_PIPELINE_INDEX_TRIPLES_STAGES_H
+#define CGAL_DELAUNAY_FROM_PREDICTION_INTERNAL_PIPELINE_INDEX_TRIPLES_STAGES_H
+
+#include <CGAL/Delaunay_from_prediction/Statistics.h>
+#include <CGAL/Delaunay_from_prediction/internal/pipeline/prediction_pipeline.h>
+#include <CGAL/Delaunay_from_prediction/internal/build/block_parallel_build.h>
+#include <CGAL/Delaunay_from_prediction/internal/build/prediction_regions_build.h>
+#include <CGAL/Delaunay_from_prediction/internal/build/rebuild.h>
+#include <CGAL/Delaunay_from_prediction/internal/build/spanning_tree_insertion.h>
+#include <CGAL/Delaunay_from_prediction/internal/check/input_check.h>
+#include <CGAL/Delaunay_from_prediction/internal/check/prediction_screens.h>
+#include <CGAL/Delaunay_from_prediction/internal/import/import_prediction.h>
+#include <CGAL/Delaunay_from_prediction/internal/repair/carve_repair.h>
+#include <CGAL/Delaunay_from_prediction/internal/repair/flips.h>
+#include <CGAL/Delaunay_from_prediction/internal/repair/sort_addresses.h>
+#include <CGAL/Delaunay_from_prediction/internal/repair/t_division_repair.h>
+#include <CGAL/Delaunay_from_prediction/internal/toolbox/predicates.h>
+#include <CGAL/Delaunay_from_prediction/internal/toolbox/vertex_info.h>
+
+#include <algorithm>
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Delaunay_from_prediction {
+namespace internal {
+
+// The points point_at[0..n) and the faces `faces` (number_of_faces of them) into `dt`.
+//
+// Statistics::faces_certified counts the predicted faces never modified. Faces are told apart
+// by address, and a repair recycles the objects of the faces it destroys, so the faces the
+// stages make or change are recorded as they go (the import's filled faces, is_created(),
+// `modified_`, `touched_`): a count at the end by vertex triples would need all 2n predicted
+// triples in a table, a cost on every call.
+template <class DT, class PointIterator, class FaceRange>
+class Index_triples_stages
+{
+public:
+  using Vertex_handle = typename DT::Vertex_handle;
+  using Face_handle = typename DT::Face_handle;
+  static constexpr bool decides_exactly = !decides_by_exact_predicates<typename DT::Geom_traits>::value;
+
+  Index_triples_stages(PointIterator point_at, std::size_t n, const FaceRange& faces, std::size_t number_of_faces,
+                       DT& dt, const Pipeline_options& options)
+      : point_at_(point_at), n_(n), faces_(faces), number_of_faces_(number_of_faces), dt_(dt), options_(options),
+        result_(dt.geom_traits())
+  {
+    stats_.faces_in = number_of_faces;
+  }
+
+  Statistics& stats() { return stats_; }
+  bool is_empty() const { return false; } // no points: the rebuild makes the empty triangulation
+
+  // Every point finite, every face validated once into 32-bit triples (a malformed face
+  // throws here, before `dt` changes).
+  Outcome check()
+  {
+    check_points_are_finite(point_at_, n_);
+    fits_ = read_index_triples(faces_, n_, number_of_faces_, triples_, options_.parallel);
+    return Outcome::ok;
+  }
+
+  Outcome reason_not_to_use_prediction() const
+  {
+    if(!options_.uses_prediction())
+      return options_.strategy == Strategy::rebuild ? Outcome::rebuild_requested : Outcome::spanning_tree_requested;
+    if(!fits_)
+      return Outcome::too_many_indices;
+    return number_of_faces_ == 0 ? Outcome::no_faces : Outcome::ok;
+  }
+
+  bool can_build_by_regions() const { return true; }
+
+  Outcome build_by_regions()
+  {
+    const Outcome why = build_by_prediction_regions(result_, point_at_, n_, triples_, options_.region_size, stats_,
+                                                    options_.parallel);
+    if(why == Outcome::ok)
+      dt_.swap(result_);
+    return why;
+  }
+
+  // The screens that reject the prediction before its import: Outcome::ok when none does.
+  Outcome screen() const
+  {
+    const auto& gt = dt_.geom_traits();
+    if(options_.screen && fails_sampling_screen(gt, point_at_, n_, triples_))
+      return Outcome::screen_rejected;
+    if(options_.screen && options_.default_flip_budget &&
+       failing_edges_exceed(point_at_, n_, triples_, options_.failing_edges_limit()))
+      return Outcome::too_many_failing_edges;
+    if(missing_faces_exceed(gt, point_at_, n_, triples_, options_.max_missing_faces()))
+      return options_.repairs_locally() ? Outcome::too_many_holes : Outcome::holes_or_not_a_triangulation;
+    return Outcome::ok;
+  }
+
+  // The import with its certificate (import_prediction.h), which reports Stage::order and
+  // Stage::import itself. With the default budget it stops as soon as the failing edges it
+  // has seen, extrapolated, pass the limit.
+  template <class Run>
+  Outcome certify(const Run& run)
+  {
+    Prediction_importer<DT>::run(result_, point_at_, n_, triples_, imported_, options_.repairs_locally(),
+                                 options_.parallel, run.visitor,
+                                 options_.default_flip_budget ? options_.failing_edges_limit() : std::size_t(-1));
+    stats_.input_reordered = imported_.reordered;
+    if(imported_.failure != Outcome::ok)
+      return imported_.failure;
+    stats_.edges_tested = imported_.edges_tested;
+    stats_.edges_not_locally_delaunay = imported_.not_locally_delaunay.size();
+    stats_.faces_carved = imported_.faces_dropped;
+    // Small holes the import filled itself count as the first round of the local repair.
+    stats_.holes_refilled = imported_.holes_filled;
+    stats_.carve_rounds = imported_.holes_filled > 0 ? 1 : 0;
+    return Outcome::ok;
+  }
+
+  // What the import could not make a triangulation of is carved and filled
+  // (carve_repair.h); then, with Strategy::t_division, the t-division (Theorem 2.1).
+  template <class Run>
+  Outcome repair(const Run& run)
+  {
+    if(imported_.needs_repair) {
+      if(imported_.open_halfedges.size() > options_.max_open_halfedges())
+        return Outcome::too_many_holes;
+      const Outcome why = run(Stage::carve, [&] { return carve(); });
+      if(why != Outcome::ok)
+        return why;
+    }
+    if(options_.strategy == Strategy::t_division)
+      run(Stage::t_division, [&] { return divide(); });
+    return Outcome::ok;
+  }
+
+  Outcome flip()
+  {
+    const std::size_t budget =
+        options_.max_flips + (regions_ ? options_.flips_for_reinserted(regions_->detached().size()) : 0);
+    return lawson_flip(result_, stack(), budget, stats_.flips, touched_, options_.parallel)
+               ? Outcome::ok
+               : Outcome::flip_budget_exhausted;
+  }
+
+  // Points no face uses: duplicates of vertices, or points to insert.
+  bool has_unused_points() const { return !imported_.unused_points.empty(); }
+
+  Outcome insert_unused_points()
+  {
+    stats_.points_unused = imported_.unused_points.size();
+    insert_points(result_, point_at_, imported_.unused_points, stats_, &new_vertices_);
+    std::sort(new_vertices_.begin(), new_vertices_.end());
+    return Outcome::ok;
+  }
+
+  // Statistics::faces_certified, then the result handed over.
+  void count_certified_faces()
+  {
+    if(!has_unused_points() && !carve_ && !regions_ && imported_.filled_faces.empty())
+      stats_.faces_certified = result_.number_of_faces() - count_distinct(touched_);
+    else if(!has_unused_points() && !regions_)
+      // The predicted faces kept, less those the repair modified (flipped, or split by a
+      // reinserted vertex); the faces it made are not predicted faces.
+      stats_.faces_certified = number_of_faces_ - stats_.faces_carved -
+                               count_distinct_addresses<typename DT::Face>(
+                                   modified_, touched_, 0, [&](const void* f) { return !made_by_repair(f); });
+    else
+      stats_.faces_certified = count_faces_kept();
+    dt_.swap(result_);
+  }
+
+  // A build from scratch: in spatial order (in blocks on several threads), or, with
+  // Strategy::spanning_tree, along a spanning tree of the faces' edges (Corollaries 3.4 and
+  // 3.5). Measured at 1e6 points on predictions that fall back (points moved by 0.3 to 1
+  // spacing, 1% of the points relabelled, random triples; bench_fallback.cpp), the spatial
+  // order was as fast to 26% faster: the default.
+  void rebuild()
+  {
+    result_.tds().clear(); // release the partial import before building anew
+    const std::vector<std::uint32_t> grid_order = std::move(imported_.points_in_grid_order);
+    imported_ = Imported_prediction<DT>();
+    DT fresh(dt_.geom_traits());
+    if(!decides_exactly || options_.strategy != Strategy::spanning_tree || !fits_ ||
+       n_ >= std::size_t(no_rank)) {
+      std::vector<std::uint32_t>().swap(triples_); // not needed: keep the peak memory down
+      const std::size_t blocks = decides_exactly ? options_.rebuild_blocks() : 1;
+      if(blocks < 2 || !build_in_blocks(fresh, point_at_, n_, stats_, blocks))
+        build_from_scratch(fresh, point_at_, n_, stats_, grid_order);
+    } else {
+      // Two edges of each face keep its three corners connected (`triples_` is still as read:
+      // the import, which reorders it, did not run).
+      std::vector<std::uint32_t> ends;
+      ends.reserve(4 * number_of_faces_);
+      for(std::size_t t = 0; t < triples_.size(); t += 3)
+        ends.insert(ends.end(), {triples_[t], triples_[t + 1], triples_[t + 1], triples_[t + 2]});
+      std::vector<std::uint32_t>().swap(triples_);
+      build_along_edges(fresh, point_at_, n_, ends, stats_);
+    }
+    dt_.swap(fresh);
+  }
+
+private:
+  std::vector<std::pair<Face_handle, int>>& stack() { return imported_.not_locally_delaunay; }
+
+  bool filled_by_import(const void* f) const
+  {
+    return std::binary_search(imported_.filled_faces.begin(), imported_.filled_faces.end(), f);
+  }
+  bool made_by_repair(const void* f) const
+  {
+    return (carve_ && carve_->is_created(f)) || (regions_ && regions_->is_created(f)) || filled_by_import(f);
+  }
+  // A vertex one face held twice (the faces overlap there) is at the same point as `same`.
+  void merge_duplicate(Vertex_handle v, Vertex_handle same)
+  {
+    merge_index_info_of(same, v);
+    result_.tds().delete_vertex(v);
+    ++stats_.duplicate_points;
+  }
+
+  // The faces kept are not a triangulation with a convex hull: fill the holes and close the
+  // hull (carve_repair.h); vertices left without a face are reinserted.
+  Outcome carve()
+  {
+    carve_.reset(new Carve_repair<DT>(result_, false));
+    carve_->expect_outer_cycle();
+    // Faces that overlap without sharing an edge on one side (none left out) still meet at a
+    // vertex in several fans: a vertex of a carved star may keep a closed fan elsewhere.
+    carve_->expect_several_fans();
+    if(imported_.faces_dropped > 0) // faces overlapped: some may still overlap unseen
+      carve_vertices_wound_twice(result_, *carve_);
+    for(const auto& e : imported_.open_halfedges)
+      carve_->add_open_halfedge(e.first, e.second);
+    const Outcome why = carve_->plan(default_carve_limits(n_));
+    stats_.carve_rounds = (std::max)(stats_.carve_rounds, carve_->rounds());
+    if(why != Outcome::ok)
+      return why;
+    carve_->commit(stack());
+    if(!carve_->finish_hull(stack(), stats_.flips))
+      return Outcome::carve_not_a_triangulation;
+    carve_->reinsert(stack(), modified_, [&](Vertex_handle v, Vertex_handle same) { merge_duplicate(v, same); });
+    // Faces the import filled holes with are not predicted faces, carved or modified.
+    modified_.erase(std::remove_if(modified_.begin(), modified_.end(),
+                                   [&](const void* f) { return filled_by_import(f); }),
+                    modified_.end());
+    std::size_t filled_removed = 0;
+    for(const void* f : imported_.filled_faces)
+      filled_removed += carve_->is_removed(f) ? 1 : 0;
+    stats_.faces_carved += carve_->faces_removed() - filled_removed;
+    stats_.holes_refilled += carve_->holes();
+    stats_.points_reinserted = carve_->detached().size();
+    return Outcome::ok;
+  }
+
+  // Theorem 2.1 (t_division_repair.h). When it does not pay (or cannot be planned), `result_`
+  // is untouched: a valid triangulation after the carve, which the flips finish as with
+  // Strategy::carve.
+  Outcome divide()
+  {
+    const Outcome why = repair_by_t_division(
+        result_, regions_, std::vector<Face_handle>(), true, stack(), !carve_, options_.region_size,
+        options_.tuning.t_division_budget_factor, modified_, stats_, false,
+        [&](Vertex_handle v, Vertex_handle same) { merge_duplicate(v, same); },
+        [&](const void* f) { return (carve_ && carve_->is_created(f)) || filled_by_import(f); });
+    if(why != Outcome::ok)
+      regions_.reset();
+    return why;
+  }
+
+  // A predicted face survives if it was never flipped, is not one a repair made (the
+  // t-division may also remove faces the carve made: counted here, not subtracted), and has
+  // no new vertex (insertion recycles the faces it destroys for faces around the new vertex).
+  std::size_t count_faces_kept()
+  {
+    for(const Face_handle f : touched_)
+      modified_.push_back(&*f);
+    sort_unique_addresses(modified_);
+    auto is_new = [&](const Vertex_handle v) {
+      return std::binary_search(new_vertices_.begin(), new_vertices_.end(), static_cast<const void*>(&*v));
+    };
+    std::size_t kept = 0;
+    for(auto f = result_.finite_faces_begin(); f != result_.finite_faces_end(); ++f)
+      if(!std::binary_search(modified_.begin(), modified_.end(), static_cast<const void*>(&*f)) &&
+         !made_by_repair(&*f) && !is_new(f->vertex(0)) && !is_new(f->vertex(1)) && !is_new(f->vertex(2)))
+        ++kept;
+    return kept;
+  }
+
+  PointIterator point_at_;
+  std::size_t n_;
+  const FaceRange& faces_;
+  std::size_t number_of_faces_;
+  DT& dt_;
+  const Pipeline_options& options_;
+  Statistics stats_;
+  DT result_; // the import, repaired; swapped into dt_ at the end
+  std::vector<std::uint32_t> triples_;
+  bool fits_ = true;
+  Imported_prediction<DT> imported_;
+  std::unique_ptr<Carve_repair<DT>> carve_;
+  std::unique_ptr<T_division_repair<DT>> regions_;
+  std::vector<const void*> modified_;   // predicted faces changed by a repair
+  std::vector<Face_handle> touched_;    // faces flipped
+  std::vector<const void*> new_vertices_; // the unused points inserted
+};
+
+} // namespace internal
+} // namespace Delaunay_from_prediction
+} // namespace CGAL
+
+#endif // CGAL_DELAUNAY_FROM_PREDICTION_INTERNAL_PIPELINE_INDEX_TRIPLES_STAGES_H
