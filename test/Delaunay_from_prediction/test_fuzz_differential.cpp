@@ -600,10 +600,12 @@ static Case gen_case(unsigned long long seed, long long k)
 }
 #endif // DFP_FUZZ_EPECK_PART
 
-// The tuning of a case's calls: Tuning::min_points_per_block as the case says.
+// The tuning of a case's calls: Tuning::min_points_per_block as the case says; parallel calls
+// build in blocks from 2 threads, so that the blocks are drawn on a 2-core machine too.
 inline DFP::Tuning tuning_of(const Case& c)
 {
   DFP::Tuning t;
+  t.min_threads_for_blocks = 2;
   if(c.region_block_points >= 0)
     t.min_points_per_block = std::size_t(c.region_block_points);
   return t;

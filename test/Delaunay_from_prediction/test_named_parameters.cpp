@@ -455,6 +455,7 @@ void test_tuning(CGAL::Random& rng)
   const Faces triples = random_triples(points.size(), 2 * points.size(), rng);
   DFP::Tuning blocks, no_blocks;
   blocks.min_points_per_block = 200;
+  blocks.min_threads_for_blocks = 2;
   no_blocks.min_threads_for_blocks = 1000;
   for_each_concurrency([&] {
     auto vertex_order = [&](const DFP::Tuning& t) {

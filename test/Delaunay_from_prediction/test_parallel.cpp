@@ -519,11 +519,13 @@ void regions_in_entry_points(CGAL::Random& rng)
 {
   using K = CGAL::Exact_predicates_inexact_constructions_kernel;
   DFP_CHECK(DFP::internal::default_block_count(std::size_t(1) << 20, 1) == 1);
-  DFP_CHECK(DFP::internal::default_block_count(std::size_t(1) << 20, 2) == 4);
+  DFP_CHECK(DFP::internal::default_block_count(std::size_t(1) << 20, 2) == 1);
+  DFP_CHECK(DFP::internal::default_block_count(std::size_t(1) << 20, 4) == 8);
   DFP_CHECK(DFP::internal::default_block_count(std::size_t(1) << 20, 8) == 16);
   DFP_CHECK(DFP::internal::default_block_count(std::size_t(1) << 16, 8) == 2);
-  DFP::Tuning tuning; // blocks of 200 points, passed to every call below
+  DFP::Tuning tuning; // blocks of 200 points from 2 threads, passed to every call below
   tuning.min_points_per_block = 200;
+  tuning.min_threads_for_blocks = 2;
   const auto small_blocks = DFP::parameters::tuning(tuning);
   const std::size_t n = 3000;
   DFP_CHECK(DFP::internal::default_block_count(n, 2, tuning) == 4 &&

@@ -135,9 +135,11 @@ struct Tuning
   /// (bench_delaunay_from_prediction's t-division cases, 1e5 and 1e6 points); tests raise it to reach the division on small inputs.
   double t_division_budget_factor = 1;
   /// with `CGAL::Parallel_tag`, a build from scratch is made in blocks only from this many
-  /// threads: on one thread the build in blocks costs 14% more than the sequential build
-  /// (bench_region_build, 1e6 points).
-  std::size_t min_threads_for_blocks = 2;
+  /// threads: on 2 threads the build in blocks took 1.1-1.5 times the sequential build on
+  /// flat arrays (results/rebuild_engine_ab_1e6.txt, 1e6 points), and on one thread it costs
+  /// 14% more than the sequential build on the triangulation (bench_region_build). 4 is a
+  /// choice, not a measurement: no machine with more than 2 cores was available.
+  std::size_t min_threads_for_blocks = 4;
   /// ... and only in blocks of at least this many points (two or more blocks): smaller blocks
   /// make the seams' share grow; at 1e6 points on 2 threads 4 blocks gave 1.58x the sequential
   /// build, 2 blocks 1.23x, 8 blocks 1.51x (bench_region_build). Tests lower it to build in

@@ -7,8 +7,10 @@
 // finite face the split and the flips around the new vertex with the package's filtered
 // in-circle test, CGAL's insertion for the rest), its capped form with a grid fallback for
 // insertions from hints (insert_walking_from(), Vertex_grid), and the reinsertion of vertex
-// objects that keeps handles and info() (the repairs). The from-scratch builds of
-// rebuild.h, the spanning-tree engine, imprecise points, split and BrioDC all insert here.
+// objects that keeps handles and info() (the repairs). The spanning-tree engine, imprecise
+// points, split, BrioDC, the blocks of the parallel build and the points added to a
+// triangulation insert here; the sequential builds from scratch run the same algorithm on
+// flat arrays (flat_insertion.h).
 
 #ifndef CGAL_DELAUNAY_FROM_PREDICTION_INTERNAL_BUILD_INSERTION_H
 #define CGAL_DELAUNAY_FROM_PREDICTION_INTERNAL_BUILD_INSERTION_H

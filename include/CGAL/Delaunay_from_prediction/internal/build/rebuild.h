@@ -2,13 +2,14 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Author(s): Delaunay_from_prediction founding team
 //
-// Builds from scratch: the package's insertion (insertion.h) in a biased randomized grid
-// order with the previous vertex as hint (CGAL's range insert does the same after a
-// spatial_sort that costs a third of its time; the grid order is ten times cheaper and was
-// measured 8-15% faster overall at 1e6 points), over point indices so that duplicates keep
-// the smallest index. Used for points no face covers, for from-scratch fallbacks, and,
-// through a transplant, for rebuilding a caller's triangulation in place while keeping its
-// vertex objects.
+// Builds from scratch: Lawson's insertion on flat arrays (flat_insertion.h) in a biased
+// randomized grid order, each point located from the previous one (CGAL's range insert does
+// the same after a spatial_sort that costs a third of its time; the grid order is ten times
+// cheaper), over point indices so that duplicates keep the smallest index, the faces then
+// written into the triangulation; dimensions 0 and 1 by the package's insertion into the
+// triangulation (insertion.h). Used for from-scratch fallbacks and for rebuilding a caller's
+// triangulation in place while keeping its vertex and face objects; insert_points() adds
+// points to a triangulation (the points no face covers).
 
 #ifndef CGAL_DELAUNAY_FROM_PREDICTION_INTERNAL_BUILD_REBUILD_H
 #define CGAL_DELAUNAY_FROM_PREDICTION_INTERNAL_BUILD_REBUILD_H
@@ -16,6 +17,7 @@
 #include <CGAL/Delaunay_from_prediction/Statistics.h>
 #include <CGAL/Delaunay_from_prediction/internal/toolbox/concurrency.h>
 #include <CGAL/Delaunay_from_prediction/internal/toolbox/predicates.h>
+#include <CGAL/Delaunay_from_prediction/internal/build/flat_insertion.h>
 #include <CGAL/Delaunay_from_prediction/internal/build/insertion.h>
 #include <CGAL/Delaunay_from_prediction/internal/import/spatial_order.h>
 #include <CGAL/Delaunay_from_prediction/internal/toolbox/vertex_info.h>
@@ -38,10 +40,35 @@ namespace CGAL {
 namespace Delaunay_from_prediction {
 namespace internal {
 
+// Builds DT(points[indices[0]], points[indices[1]], ...) into `dt`, which holds no vertex, on
+// flat arrays (flat_insertion.h), inserted in the order of `indices`: the vertices are created
+// in that order, the faces written, then `on_vertex(index, vertex, is_new)` is called for
+// each index in that order (`is_new` false for a point equal to an earlier one). Returns
+// false, with `dt` untouched, when the points span no triangle.
+template <class DT, class PointIterator, class OnVertex>
+bool build_on_flat_arrays(DT& dt, PointIterator points, const std::vector<std::size_t>& indices, OnVertex on_vertex)
+{
+  CGAL_precondition(dt.number_of_vertices() == 0);
+  const std::size_t n = indices.size();
+  Flat_delaunay<typename DT::Geom_traits> flat(dt.geom_traits());
+  if(!flat.build(n, [&](std::size_t k) -> decltype(points[0]) { return points[indices[k]]; }))
+    return false;
+  std::vector<typename DT::Vertex_handle> vertex(n);
+  for(std::size_t k = 0; k < n; ++k)
+    if(flat.representative(k) == k) {
+      vertex[k] = dt.tds().create_vertex();
+      vertex[k]->set_point(points[indices[k]]);
+    }
+  flat.write_faces(dt.tds(), dt.infinite_vertex(), [&](std::uint32_t k) { return vertex[k]; });
+  for(std::size_t k = 0; k < n; ++k)
+    on_vertex(indices[k], vertex[flat.representative(k)], flat.representative(k) == k);
+  return true;
+}
+
 // Inserts the points of the given indices into the Delaunay triangulation `dt`, in biased
 // randomized grid order (sort_along_grid; with `in_order`, the indices are in that order
-// already), each located from the previous vertex. `on_vertex(index, vertex, is_new)` is
-// called after each insertion; `is_new` is false when the point was already a vertex (a
+// already), each by insert_near() from the previous vertex. `on_vertex(index, vertex, is_new)`
+// is called after each insertion; `is_new` is false when the point was already a vertex (a
 // duplicate). Returns the number of new vertices.
 template <class DT, class PointIterator, class OnVertex>
 std::size_t insert_by_index(DT& dt, PointIterator points, std::vector<std::size_t>& indices,
@@ -156,7 +183,7 @@ std::vector<Deciding_dt::Vertex_handle> build_deciding(Deciding_dt& aside, Point
   for(std::size_t i = 0; i < n; ++i)
     indices[i] = i;
   std::vector<Deciding_dt::Vertex_handle> vertex(n);
-  insert_by_index(aside, rounded.begin(), indices, [&](std::size_t i, auto v, bool is_new) {
+  auto on_vertex = [&](std::size_t i, auto v, bool is_new) {
     vertex[i] = v;
     if(is_new) {
       v->info() = i;
@@ -164,7 +191,10 @@ std::vector<Deciding_dt::Vertex_handle> build_deciding(Deciding_dt& aside, Point
       on_duplicate(i, v->info());
       v->info() = (std::min)(v->info(), i); // the smallest index of the point
     }
-  });
+  };
+  sort_along_grid(indices, [&](std::size_t i) -> const Deciding_gt::Point_2& { return rounded[i]; }, true);
+  if(!build_on_flat_arrays(aside, rounded.begin(), indices, on_vertex))
+    insert_by_index(aside, rounded.begin(), indices, on_vertex, true);
   return vertex;
 }
 
@@ -198,7 +228,8 @@ void insert_with_exact_predicates(DT& dt, PointIterator points, std::size_t n, O
   }
 }
 
-// Builds DT(points) from scratch into `dt`, which holds no vertex. `grid_order`, if not
+// Builds DT(points) from scratch into `dt`, which holds no vertex, on flat arrays
+// (build_on_flat_arrays()). `grid_order`, if not
 // empty, lists all the indices in grid order (the import had sorted them so): they
 // are only dealt into rounds, not sorted again (about 0.03 s less at 1e6 points). With
 // traits whose predicates are not exact, by insert_with_exact_predicates().
@@ -219,7 +250,17 @@ void build_from_scratch(DT& dt, PointIterator points, std::size_t n, Statistics&
     indices[i] = in_order ? grid_order[i] : i;
   if(in_order)
     deal_into_rounds(indices);
-  insert_points(dt, points, indices, stats, nullptr, in_order);
+  else
+    sort_along_grid(indices, [&](std::size_t i) -> decltype(points[0]) { return points[i]; }, true);
+  std::size_t duplicates = 0;
+  if(!build_on_flat_arrays(dt, points, indices, [&](std::size_t i, auto v, bool is_new) {
+       record_index_info(v, i, is_new, duplicates);
+     })) {
+    insert_points(dt, points, indices, stats, nullptr, true); // all collinear: dimension 0 or 1
+    return;
+  }
+  stats.points_reinserted += n;
+  stats.duplicate_points += duplicates;
 }
 
 // The whole build of an entry point for traits whose predicates are not exact:
@@ -235,9 +276,10 @@ void build_with_exact_predicates(DT& dt, PointIterator points, std::size_t n, St
 }
 
 // Replaces the faces of `tr` by those of DT(its vertices), keeping every vertex object (so
-// vertex handles and info() survive). The new triangulation is built aside by the package's
-// insertion (insert_by_index(); with inexact predicates, by exact ones: build_deciding()), then transplanted face by
-// face, any dimension included. If two vertices are at the same point (for inexact predicates: by the traits'
+// vertex handles and info() survive). The new triangulation is built on flat arrays and
+// written into tr's own face objects (Flat_delaunay::write_faces(); dimensions 0 and 1: built
+// aside by insert_by_index(); with inexact predicates, by exact ones: build_deciding()), then
+// transplanted face by face. If two vertices are at the same point (for inexact predicates: by the traits'
 // compare_xy, before any insertion), throws Invalid_prediction naming both, before `tr` is modified.
 // `build_aside(aside, points, n)`, if given, may build the triangulation aside instead (with
 // vertex info the point index), returning false when it did not; one that lost a point (two at
@@ -313,7 +355,19 @@ bool rebuild_keeping_vertices(Triangulation& tr, Statistics& stats, BuildAside b
     }
     if(!built && !or_by_insertion)
       return false;
-    if(!built)
+    if(!built) {
+      // On flat arrays (flat_insertion.h), written into tr's own face objects.
+      sort_along_grid(indices, [&](std::size_t i) -> const Point& { return points[i]; }, true);
+      Flat_delaunay<Gt> flat(tr.geom_traits());
+      if(flat.build(n, [&](std::size_t k) -> const Point& { return points[indices[k]]; })) {
+        for(std::size_t k = 0; k < n; ++k)
+          if(flat.representative(k) != k)
+            duplicates(indices[flat.representative(k)], indices[k]); // throws; tr untouched
+        flat.write_faces(tr.tds(), tr.infinite_vertex(), [&](std::uint32_t k) { return vertices[indices[k]]; });
+        return true;
+      }
+    }
+    if(!built) // dimension 0 or 1
       insert_by_index(aside, points.begin(), indices, [&](std::size_t i, auto v, bool is_new) {
         if(is_new) {
           v->info() = i;
