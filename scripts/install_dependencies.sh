@@ -5,8 +5,12 @@
 set -euo pipefail
 
 # pybind11-dev, python3-dev, python3-numpy: the Python module; python3-scipy, python3-pytest: its tests.
+# python3-pybind11, python3-setuptools, python3-pip, python3-venv: the module built and installed by
+# pip with no download (--no-build-isolation: setuptools and pybind11's setup_helpers from Debian),
+# also into a venv made with --system-site-packages (scripts/test_pip_install.sh).
 packages=(cmake g++ libcgal-dev libboost-dev libgmp-dev libmpfr-dev libtbb-dev
-          pybind11-dev python3-dev python3-numpy python3-scipy python3-pytest)
+          pybind11-dev python3-dev python3-numpy python3-scipy python3-pytest
+          python3-pybind11 python3-setuptools python3-pip python3-venv)
 if (($#)); then
   packages=("$@")
 fi

@@ -5,7 +5,7 @@
 // Differential fuzzer: random point families x prediction families x kernels x entry points x
 // named parameters x, for make_delaunay and the prediction entry points, the concurrency tag
 // (Sequential_tag or Parallel_if_available_tag, with blocks of a few points for the region-parallel
-// build from scratch), each result compared with CGAL's Delaunay_triangulation_2 built from
+// build from scratch), Kinetic_Delaunay_triangulation_2 on every make_delaunay case, each result compared with CGAL's Delaunay_triangulation_2 built from
 // scratch with the same kernel (as index triples, vertex sets and info), plus the consistency of
 // the Statistics, is_valid(), and "malformed input throws Invalid_prediction and changes
 // nothing". Seeded and budgeted; cases run in forked children so that a crash or a hang is
@@ -24,6 +24,7 @@
 #include "fuzz_util.h"
 
 #include <CGAL/Delaunay_from_predicted_edges_2.h>
+#include <CGAL/Delaunay_from_prediction/Kinetic_Delaunay_triangulation_2.h>
 #include <CGAL/Delaunay_from_prediction/brio_dc.h>
 #include <CGAL/Delaunay_from_prediction/imprecise_points.h>
 #include <CGAL/Delaunay_from_prediction/prediction_models.h>
@@ -901,6 +902,40 @@ void run_md(Checker& ck, const Case& c, bool exact)
   check_stats(ck, s, (long long)faces_before, -1, 0);
 }
 
+// Kinetic_Delaunay_triangulation_2 on the same move: built on the points before, moved to the
+// points after (which may bring points together: a merge) and back (a split). Each result is
+// CGAL's DT with every point at its index's vertex, rebuilt exactly when points merged or split.
+template <class K>
+void run_kinetic(Checker& ck, const Case& c)
+{
+  using DT = dfp_test::DT_with_info<K>;
+  const auto P0 = points_of<K>(c.pts), P1 = points_of<K>(c.pts2);
+  std::set<std::pair<double, double>> seen;
+  bool merged = false;
+  for(const XY& p : c.pts2)
+    merged = !seen.insert({p.x, p.y}).second || merged;
+  DFP::Kinetic_Delaunay_triangulation_2<DT> kdt;
+  expect_no_throw(ck, [&] { kdt.build(P0); });
+  for(const auto* P : {&P1, &P0}) {
+    if(!ck.failure.empty())
+      return;
+    expect_no_throw(ck, [&] {
+      if(c.parallel)
+        kdt.template move<CGAL::Parallel_if_available_tag>(*P);
+      else
+        kdt.move(*P);
+    });
+    if(!ck.failure.empty())
+      return;
+    check_result(ck, kdt.triangulation(), *P, true);
+    for(std::size_t i = 0; i < P->size() && ck.failure.empty(); ++i)
+      if(!(kdt.point(i) == (*P)[i]))
+        ck.fail("kinetic:point_not_at_its_vertex", "point " + std::to_string(i));
+    if(ck.failure.empty() && kdt.last_move_rebuilt() != merged)
+      ck.fail("kinetic:rule", std::string(merged ? "points merged or split, not rebuilt" : "rebuilt, no merge or split"));
+  }
+}
+
 // Brute-force proximity graphs (exact predicates), on representatives (smallest index).
 template <class K>
 void run_proximity(Checker& ck, const Case& c)
@@ -1195,6 +1230,8 @@ std::string run_kernel(const Case& c)
       else
         c.output == O_INFO ? run_md<dfp_test::DT_with_info<K>, K>(ck, c, exact)
                            : run_md<dfp_test::DT_plain<K>, K>(ck, c, exact);
+      if(exact && ck.failure.empty())
+        run_kinetic<K>(ck, c);
       break;
     case E_SG:
       if(c.output == O_HIER)

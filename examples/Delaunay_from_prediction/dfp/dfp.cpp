@@ -4,13 +4,15 @@
 //
 // dfp: the package's command-line tool. `dfp triangulate` reads points and, optionally, a
 // prediction of their Delaunay triangulation from files, computes the triangulation with
-// delaunay_from_prediction() and writes it; `dfp kinetic` repairs one triangulation through a
-// sequence of point frames with make_delaunay(). `dfp --help` tells the rest.
+// delaunay_from_prediction() and writes it; `dfp kinetic` keeps one triangulation through a
+// sequence of point frames with Kinetic_Delaunay_triangulation_2 (make_delaunay() in place, a
+// rebuild when points merge or split). `dfp --help` tells the rest.
 //
 // Exit status: 0 on success, 1 for an input or output error (the message names the file and
 // the line), 2 for a wrong command line, 3 when --check finds a difference with CGAL's build.
 
 #include <CGAL/Delaunay_from_predicted_edges_2.h>
+#include <CGAL/Delaunay_from_prediction/Kinetic_Delaunay_triangulation_2.h>
 #include <CGAL/Delaunay_from_prediction/file_io.h>
 #include <CGAL/Delaunay_from_prediction_2.h>
 
@@ -64,7 +66,8 @@ const char* const usage_text =
     "triangulate  computes the Delaunay triangulation of POINTS, using FACES (if given) as a\n"
     "             prediction of it, and writes it to OUT.\n"
     "kinetic      triangulates the first frame (using FACES if given), then moves its vertices\n"
-    "             to each next frame's points and repairs the triangulation in place. Every\n"
+    "             to each next frame's points and repairs the triangulation in place (rebuilt\n"
+    "             when points merge or split: Kinetic_Delaunay_triangulation_2). Every\n"
     "             frame has the same number of points, the same point in the same place.\n"
     "             OUT with '{}' writes every frame ('{}' becomes the frame number, from 0);\n"
     "             without, the last frame only.\n"
@@ -86,7 +89,7 @@ const char* const usage_text =
     "  --strategy NAME    automatic (default), flips, carve, t_division, regions, rebuild,\n"
     "                     spanning_tree: see the manual\n"
     "  --cgal             ignore the prediction and build with CGAL's Delaunay_triangulation_2\n"
-    "                     (range insertion), for comparisons\n"
+    "                     (range insertion), for comparisons; kinetic: every frame so\n"
     "  --quiet            no progress lines on stderr (printed for files over 64 MiB)\n";
 
 struct Usage_error
@@ -369,20 +372,15 @@ int run_kinetic(const Options& o)
   std::vector<Point> points;
   const std::size_t first_index = IO::read_points(o.inputs[0], points);
   const std::size_t n = points.size();
-  DT dt;
+  DT built;
   Stage_times stages;
-  DFP::Statistics s = triangulate<Tag>(points, read_prediction(o.prediction, n), dt, o, stages);
-  // One vertex per point index, to move them; duplicate points share a vertex and cannot move
-  // apart in place: such frames are built again, with the previous faces as the prediction.
-  std::vector<DT::Vertex_handle> vertex_of(n);
-  bool in_place = false;
-  auto record_vertices = [&]() {
-    std::size_t recorded = 0;
-    for(auto v = dt.finite_vertices_begin(); v != dt.finite_vertices_end(); ++v, ++recorded)
-      vertex_of[v->info()] = v;
-    in_place = recorded == n;
-  };
-  record_vertices();
+  DFP::Statistics s = triangulate<Tag>(points, read_prediction(o.prediction, n), built, o, stages);
+  // The package's kinetic triangulation moves the vertices frame by frame (in place, or
+  // rebuilt when points merge or split); --cgal builds every frame with CGAL instead.
+  DFP::Kinetic_Delaunay_triangulation_2<DT> kinetic;
+  if(!o.cgal)
+    kinetic.assign(built, points);
+  const DT& dt = o.cgal ? built : kinetic.triangulation();
 
   int status = 0;
   for(std::size_t frame = 0; frame < o.inputs.size(); ++frame) {
@@ -399,24 +397,11 @@ int run_kinetic(const Options& o)
       read_s = seconds_since(start);
       const auto repair = std::chrono::steady_clock::now();
       stages.seconds.clear();
-      bool rebuilt = !in_place;
-      if(in_place) {
-        for(std::size_t i = 0; i < n; ++i)
-          vertex_of[i]->set_point(points[i]);
-        try {
-          s = DFP::make_delaunay<Tag>(dt, DFP::parameters::strategy(o.strategy).visitor(std::ref(stages)));
-        } catch(const DFP::Invalid_prediction&) {
-          rebuilt = true; // two points met: the triangulation loses a vertex
-        }
-      }
-      if(rebuilt) {
-        Prediction previous;
-        previous.faces = DFP::internal::faces_of(dt);
-        DT next_dt;
-        s = triangulate<Tag>(points, previous, next_dt, o, stages);
-        dt.swap(next_dt);
-        record_vertices();
-      }
+      if(o.cgal)
+        s = triangulate<Tag>(points, Prediction(), built, o, stages);
+      else
+        s = kinetic.template move<Tag>(points, DFP::parameters::strategy(o.strategy).visitor(std::ref(stages)));
+      const bool rebuilt = !o.cgal && kinetic.last_move_rebuilt();
       if(o.stats)
         std::cout << "frame " << frame << ": read_s " << read_s << " repair_s " << seconds_since(repair)
                   << " flips " << s.flips << " faces_certified " << s.faces_certified << "/" << s.faces_in

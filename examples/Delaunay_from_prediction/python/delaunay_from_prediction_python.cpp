@@ -8,6 +8,7 @@
 //   import delaunay_from_prediction as dfp
 //   triangles, stats = dfp.delaunay_from_prediction(points, faces)  # (n,2) float64, (m,3) ints
 //   t = dfp.Triangulation(points); t.move(new_points); t.triangles
+//   d = dfp.Delaunay(points)    # a drop-in for scipy.spatial.Delaunay in 2D
 //
 // Inputs are read straight from the numpy buffers into C++ vectors (no Python object per
 // point), then the GIL is released for the C++ work; outputs are numpy arrays that take over
@@ -19,13 +20,18 @@
 #include <pybind11/pybind11.h>
 
 #include <CGAL/Delaunay_from_prediction_2.h>
+#include <CGAL/Delaunay_from_prediction/Kinetic_Delaunay_triangulation_2.h>
 #include <CGAL/Delaunay_from_prediction/Statistics.h>
 #include <CGAL/Delaunay_from_prediction/proximity_graphs.h>
 
 #include <CGAL/Delaunay_triangulation_2.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Spatial_sort_traits_adapter_2.h>
 #include <CGAL/Triangulation_data_structure_2.h>
+#include <CGAL/Triangulation_face_base_with_info_2.h>
 #include <CGAL/Triangulation_vertex_base_with_info_2.h>
+#include <CGAL/hilbert_sort.h>
+#include <CGAL/property_map.h>
 #include <CGAL/tags.h>
 
 #include <algorithm>
@@ -51,7 +57,8 @@ namespace {
 using K = CGAL::Exact_predicates_inexact_constructions_kernel;
 using Point = K::Point_2;
 using Vb = CGAL::Triangulation_vertex_base_with_info_2<std::size_t, K>;
-using Tds = CGAL::Triangulation_data_structure_2<Vb>;
+using Fb = CGAL::Triangulation_face_base_with_info_2<int, K>; // the simplex index (Delaunay)
+using Tds = CGAL::Triangulation_data_structure_2<Vb, Fb>;
 using DT = CGAL::Delaunay_triangulation_2<K, Tds>;
 using Vertex_handle = DT::Vertex_handle;
 using Face = std::array<std::int64_t, 3>;
@@ -269,99 +276,326 @@ std::vector<std::int64_t> cgal_delaunay(const std::vector<Point>& points)
   return triangles_of(dt);
 }
 
-// A Delaunay triangulation kept for points that move: vertex handles per point index,
-// repaired in place by make_delaunay() when the points move.
-class Triangulation
+// The package's Kinetic_Delaunay_triangulation_2 behind a mutex (the GIL is released while the
+// C++ works, so two Python threads may call one object), with the finite faces numbered in
+// their info() for the scipy-style attributes: face k is simplex k, infinite faces -1.
+using Kinetic = DFP::Kinetic_Delaunay_triangulation_2<DT>;
+
+class Kinetic_points
 {
 public:
-  Triangulation(const std::vector<Point>& points, bool parallel) : n_(points.size())
+  Kinetic_points(const std::vector<Point>& points, const std::vector<Face>& faces, bool parallel)
   {
-    build(points, std::vector<Face>(), parallel);
+    stats_ = with_tag(parallel, [&](auto tag) { return kinetic_.template build<decltype(tag)>(points, faces); });
   }
 
-  std::size_t number_of_points() const { return n_; }
+  std::size_t number_of_points() const { return kinetic_.number_of_points(); }
 
-  struct Move_result
-  {
-    DFP::Statistics stats;
-    bool rebuilt = false;
-  };
-
-  Move_result move(const std::vector<Point>& points, bool parallel)
+  // Moves the points by the class's rule (in place, or rebuilt when points merge or split).
+  std::pair<DFP::Statistics, bool> move(const std::vector<Point>& points, bool parallel)
   {
     std::lock_guard<std::mutex> lock(mutex_);
-    check_finite(points); // before anything changes
-    // Indices that share a vertex (equal points) can stay in place only if they still coincide.
-    bool in_place = true;
-    if(shares_vertices_)
-      for(std::size_t i = 0; i < n_ && in_place; ++i)
-        in_place = points[i] == points[vertex_of_[i]->info()];
-    if(in_place) {
-      for(auto v = dt_->finite_vertices_begin(); v != dt_->finite_vertices_end(); ++v)
-        v->set_point(points[v->info()]);
-      try {
-        return {with_tag(parallel, [&](auto tag) { return DFP::make_delaunay<decltype(tag)>(*dt_); }), false};
-      } catch(const DFP::Invalid_prediction&) {
-        // Two vertices moved onto one point: make_delaunay() left the connectivity as it was,
-        // which is still a good prediction for the rebuild below.
-      }
+    const DFP::Statistics stats =
+        with_tag(parallel, [&](auto tag) { return kinetic_.template move<decltype(tag)>(points); });
+    faces_numbered_ = false;
+    return {stats, kinetic_.last_move_rebuilt()};
+  }
+
+  const DFP::Statistics& build_statistics() const { return stats_; }
+
+  // Calls f(kinetic triangulation) under the lock, the finite faces numbered first when
+  // `numbered`.
+  template <class F>
+  auto read(F f, bool numbered = false) const
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    if(numbered && !faces_numbered_) {
+      std::int32_t k = 0;
+      for(auto fit = dt().all_faces_begin(); fit != dt().all_faces_end(); ++fit)
+        fit->info() = dt().is_infinite(fit) ? -1 : k++;
+      faces_numbered_ = true;
     }
-    Move_result result;
-    result.stats = build(points, DFP::internal::faces_of(*dt_), parallel);
-    result.rebuilt = true;
-    return result;
-  }
-
-  std::vector<std::int64_t> triangles() const
-  {
-    std::lock_guard<std::mutex> lock(mutex_);
-    return triangles_of(*dt_);
-  }
-
-  std::size_t number_of_triangles() const
-  {
-    std::lock_guard<std::mutex> lock(mutex_);
-    return dt_->dimension() == 2 ? dt_->number_of_faces() : 0;
-  }
-
-  std::vector<double> coordinates() const
-  {
-    std::lock_guard<std::mutex> lock(mutex_);
-    std::vector<double> xy(2 * n_);
-    for(std::size_t i = 0; i < n_; ++i) {
-      xy[2 * i] = vertex_of_[i]->point().x();
-      xy[2 * i + 1] = vertex_of_[i]->point().y();
-    }
-    return xy;
+    return f(kinetic_);
   }
 
 private:
-  // Builds aside, then takes the result (a throw leaves *this as it was).
-  template <class FaceRange>
-  DFP::Statistics build(const std::vector<Point>& points, const FaceRange& faces, bool parallel)
-  {
-    auto dt = std::make_unique<DT>();
-    const DFP::Statistics stats = with_tag(
-        parallel, [&](auto tag) { return DFP::delaunay_from_prediction<decltype(tag)>(points, faces, *dt); });
-    std::vector<Vertex_handle> vertex_of(n_);
-    for(auto v = dt->finite_vertices_begin(); v != dt->finite_vertices_end(); ++v)
-      vertex_of[v->info()] = v;
-    if(stats.duplicate_points > 0) {
-      const std::vector<std::size_t> representative = smallest_equal_index(points);
-      for(std::size_t i = 0; i < n_; ++i)
-        vertex_of[i] = vertex_of[representative[i]];
+  const DT& dt() const { return kinetic_.triangulation(); }
+
+  Kinetic kinetic_;
+  DFP::Statistics stats_;
+  mutable bool faces_numbered_ = false;
+  mutable std::mutex mutex_;
+};
+
+// ---------------------------------------------------------------------------------------------
+// scipy.spatial.Delaunay's attributes, read off the triangulation (dimension 2; below it there
+// is no simplex). Arrays of np.intc, as scipy's.
+
+using Intc = int; // np.intc
+
+py::array_t<Intc> intc_array(std::vector<Intc>&& values, std::size_t cols)
+{
+  auto owned = std::make_unique<std::vector<Intc>>(std::move(values));
+  const std::size_t rows = cols ? owned->size() / cols : owned->size();
+  Intc* data = owned->data();
+  py::capsule owner(owned.get(), [](void* p) { delete static_cast<std::vector<Intc>*>(p); });
+  owned.release();
+  if(cols == 0)
+    return py::array_t<Intc>({py::ssize_t(rows)}, {py::ssize_t(sizeof(Intc))}, data, owner);
+  return py::array_t<Intc>({py::ssize_t(rows), py::ssize_t(cols)},
+                           {py::ssize_t(cols * sizeof(Intc)), py::ssize_t(sizeof(Intc))}, data, owner);
+}
+
+Intc index_of(Vertex_handle v) { return Intc(v->info()); }
+
+// A finite face incident to v (-1: none, below dimension 2).
+Intc simplex_at(const DT& dt, Vertex_handle v)
+{
+  if(dt.dimension() < 2)
+    return -1;
+  auto f = dt.incident_faces(v), done = f;
+  do {
+    if(!dt.is_infinite(f))
+      return f->info();
+  } while(++f != done);
+  return -1;
+}
+
+// simplices (k, 3), each counterclockwise, and neighbors (k, 3): neighbors[i][j] is the simplex
+// opposite simplices[i][j], -1 on the hull.
+std::pair<std::vector<Intc>, std::vector<Intc>> simplices_and_neighbors_of(const DT& dt)
+{
+  std::vector<Intc> simplices, neighbors;
+  if(dt.dimension() == 2) {
+    simplices.reserve(3 * dt.number_of_faces());
+    neighbors.reserve(3 * dt.number_of_faces());
+    for(auto f = dt.finite_faces_begin(); f != dt.finite_faces_end(); ++f)
+      for(int j = 0; j < 3; ++j) {
+        simplices.push_back(index_of(f->vertex(j)));
+        neighbors.push_back(f->neighbor(j)->info());
+      }
+  }
+  return {std::move(simplices), std::move(neighbors)};
+}
+
+// The hull's edges (h, 2), counterclockwise around the hull, each from one hull vertex to the
+// next.
+std::vector<Intc> convex_hull_edges(const DT& dt)
+{
+  std::vector<Intc> edges;
+  if(dt.dimension() < 2)
+    return edges;
+  // The infinite faces circle the infinite vertex counterclockwise, which walks the hull
+  // clockwise, and each holds its hull edge in the clockwise direction: both reversed.
+  auto f = dt.incident_faces(dt.infinite_vertex()), done = f;
+  do {
+    const int i = f->index(dt.infinite_vertex());
+    edges.push_back(index_of(f->vertex(dt.ccw(i))));
+    edges.push_back(index_of(f->vertex(dt.cw(i))));
+  } while(++f != done);
+  std::reverse(edges.begin(), edges.end());
+  return edges;
+}
+
+// (indptr, indices): the neighbours of point k are indices[indptr[k]:indptr[k+1]], counter-
+// clockwise; none for a point that is not a vertex (a duplicate). Dimension 1 included.
+std::pair<std::vector<Intc>, std::vector<Intc>> vertex_neighbor_vertices(const DT& dt, std::size_t n)
+{
+  std::vector<Intc> indptr(n + 1, 0), indices;
+  std::vector<std::vector<Intc>> around(n);
+  if(dt.dimension() >= 1)
+    for(auto v = dt.finite_vertices_begin(); v != dt.finite_vertices_end(); ++v) {
+      std::vector<Intc>& out = around[v->info()];
+      auto w = dt.incident_vertices(v), done = w;
+      do {
+        if(!dt.is_infinite(w))
+          out.push_back(index_of(w));
+      } while(++w != done);
     }
-    dt_ = std::move(dt);
-    vertex_of_ = std::move(vertex_of);
-    shares_vertices_ = stats.duplicate_points > 0;
-    return stats;
+  for(std::size_t k = 0; k < n; ++k)
+    indptr[k + 1] = indptr[k] + Intc(around[k].size());
+  indices.reserve(std::size_t(indptr[n]));
+  for(const auto& a : around)
+    indices.insert(indices.end(), a.begin(), a.end());
+  return {std::move(indptr), std::move(indices)};
+}
+
+// coplanar (c, 3): the points that are no vertex (duplicates of a smaller index), each with a
+// simplex holding its vertex (-1 below dimension 2) and that vertex's point index.
+std::vector<Intc> coplanar_points(const Kinetic& k)
+{
+  std::vector<Intc> rows;
+  for(std::size_t i = 0; i < k.number_of_points(); ++i)
+    if(k.vertex(i)->info() != i) {
+      rows.push_back(Intc(i));
+      rows.push_back(simplex_at(k.triangulation(), k.vertex(i)));
+      rows.push_back(index_of(k.vertex(i)));
+    }
+  return rows;
+}
+
+// vertex_to_simplex (n,): a simplex holding each point's vertex, -1 below dimension 2.
+std::vector<Intc> vertex_to_simplex(const Kinetic& k)
+{
+  std::vector<Intc> simplex(k.number_of_points());
+  for(std::size_t i = 0; i < simplex.size(); ++i)
+    simplex[i] = simplex_at(k.triangulation(), k.vertex(i));
+  return simplex;
+}
+
+// The simplex holding each query point (closed triangles; -1 outside the hull, for a
+// non-finite query and below dimension 2). The queries are visited in Hilbert order and each
+// located by CGAL's exact walk from the previous answer.
+std::vector<Intc> find_simplices(const DT& dt, const std::vector<Point>& queries)
+{
+  std::vector<Intc> found(queries.size(), -1);
+  if(dt.dimension() < 2)
+    return found;
+  std::vector<std::size_t> order;
+  order.reserve(queries.size());
+  for(std::size_t i = 0; i < queries.size(); ++i)
+    if(std::isfinite(queries[i].x()) && std::isfinite(queries[i].y()))
+      order.push_back(i);
+  using Pmap = CGAL::Pointer_property_map<Point>::const_type;
+  using Traits = CGAL::Spatial_sort_traits_adapter_2<K, Pmap>;
+  CGAL::hilbert_sort(order.begin(), order.end(), Traits(CGAL::make_property_map(queries)));
+  DT::Face_handle hint;
+  for(const std::size_t i : order) {
+    DT::Locate_type lt;
+    int li;
+    DT::Face_handle f = dt.locate(queries[i], lt, li, hint);
+    if(lt == DT::OUTSIDE_CONVEX_HULL || lt == DT::OUTSIDE_AFFINE_HULL)
+      continue;
+    hint = f;
+    // On a hull edge or vertex, locate() may answer an infinite face: the finite face across
+    // its finite edge holds the query too.
+    if(dt.is_infinite(f))
+      f = f->neighbor(f->index(dt.infinite_vertex()));
+    found[i] = f->info();
+  }
+  return found;
+}
+
+// (n, 2) float64 array of the points.
+py::array_t<double> xy_array(const std::vector<Point>& points)
+{
+  py::array_t<double> a({py::ssize_t(points.size()), py::ssize_t(2)});
+  double* xy = a.mutable_data();
+  for(std::size_t i = 0; i < points.size(); ++i) {
+    xy[2 * i] = points[i].x();
+    xy[2 * i + 1] = points[i].y();
+  }
+  return a;
+}
+
+// The current points, by index.
+py::array_t<double> coordinates(const Kinetic_points& core)
+{
+  return xy_array(core.read([](const Kinetic& k) {
+    std::vector<Point> points;
+    points.reserve(k.number_of_points());
+    for(std::size_t i = 0; i < k.number_of_points(); ++i)
+      points.push_back(k.point(i));
+    return points;
+  }));
+}
+
+// move(new_points) of both classes: the stats dict of the call, plus 'rebuilt'.
+py::dict move_points(Kinetic_points& core, const py::object& points_in, bool parallel)
+{
+  const std::vector<Point> points = read_points(points_in, "new_points");
+  if(points.size() != core.number_of_points())
+    throw py::value_error("new_points must have the triangulation's " + std::to_string(core.number_of_points()) +
+                          " points, got " + std::to_string(points.size()));
+  std::pair<DFP::Statistics, bool> result;
+  {
+    py::gil_scoped_release nogil;
+    result = core.move(points, parallel);
+  }
+  py::dict stats = stats_dict(result.first);
+  stats["rebuilt"] = result.second;
+  return stats;
+}
+
+// The Python class Triangulation.
+struct Triangulation
+{
+  Triangulation(const std::vector<Point>& points, const std::vector<Face>& faces, bool parallel)
+      : core(points, faces, parallel)
+  {}
+  Kinetic_points core;
+};
+
+// The Python class Delaunay: scipy.spatial.Delaunay's attributes, each computed when first read
+// and kept until the next move().
+struct Delaunay
+{
+  Delaunay(const std::vector<Point>& points, const std::vector<Face>& faces, bool parallel)
+      : core(points, faces, parallel), parallel(parallel)
+  {}
+
+  // py::object members are null until set: the object is made while the GIL is released.
+  Kinetic_points core;
+  bool parallel;
+  py::object points;     // (n, 2) float64 array
+  py::object statistics; // dict
+  py::object simplices_cache, neighbors_cache, convex_hull_cache, vertex_neighbor_vertices_cache, coplanar_cache,
+      vertex_to_simplex_cache;
+
+  void forget()
+  {
+    for(py::object* o : {&simplices_cache, &neighbors_cache, &convex_hull_cache, &vertex_neighbor_vertices_cache,
+                         &coplanar_cache, &vertex_to_simplex_cache})
+      *o = py::object();
   }
 
-  std::size_t n_;
-  std::unique_ptr<DT> dt_;
-  std::vector<Vertex_handle> vertex_of_; // by point index
-  bool shares_vertices_ = false;         // some indices share a vertex (equal points)
-  mutable std::mutex mutex_;             // the GIL is released while the C++ works
+  // slot, made by make(kinetic triangulation) with the faces numbered, if it is not yet.
+  template <class Make>
+  py::object cached(py::object& slot, Make make)
+  {
+    if(!slot) {
+      py::object value = core.read([&](const Kinetic& k) { return py::object(make(k)); }, true);
+      slot = value;
+    }
+    return slot;
+  }
+
+  std::pair<py::object, py::object> simplices_and_neighbors()
+  {
+    if(!simplices_cache) {
+      std::pair<std::vector<Intc>, std::vector<Intc>> both;
+      {
+        py::gil_scoped_release nogil;
+        both = core.read([](const Kinetic& k) { return simplices_and_neighbors_of(k.triangulation()); }, true);
+      }
+      simplices_cache = intc_array(std::move(both.first), 3);
+      neighbors_cache = intc_array(std::move(both.second), 3);
+    }
+    return {simplices_cache, neighbors_cache};
+  }
+
+  py::array_t<Intc> find_simplex(const py::object& xi_in, bool /*bruteforce*/, const py::object& /*tol*/)
+  {
+    const auto xi = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(xi_in);
+    if(!xi)
+      throw py::type_error("xi must be an array of points of shape (..., 2)");
+    if(xi.ndim() < 1 || xi.shape(xi.ndim() - 1) != 2)
+      throw py::value_error("xi must be an array of shape (..., 2), got " + shape_of(xi));
+    std::vector<py::ssize_t> shape(xi.shape(), xi.shape() + xi.ndim() - 1);
+    const std::size_t count = std::size_t(xi.size() / 2);
+    std::vector<Point> queries;
+    queries.reserve(count);
+    for(std::size_t i = 0; i < count; ++i)
+      queries.emplace_back(xi.data()[2 * i], xi.data()[2 * i + 1]);
+    std::vector<Intc> found;
+    {
+      py::gil_scoped_release nogil;
+      found = core.read([&](const Kinetic& k) { return find_simplices(k.triangulation(), queries); }, true);
+    }
+    py::array_t<Intc> out(shape);
+    std::copy(found.begin(), found.end(), out.mutable_data());
+    return out;
+  }
 };
 
 // ---------------------------------------------------------------------------------------------
@@ -384,6 +618,8 @@ released while the C++ code runs.
     t = dfp.Triangulation(points)
     t.move(new_points)          # repaired in place
     t.triangles                 # (k, 3) int64, counterclockwise
+    d = dfp.Delaunay(points)    # scipy.spatial.Delaunay's attributes: d.simplices, d.neighbors, ...
+    d.find_simplex(xi); d.move(new_points)
 )doc";
 
 const char* const invalid_prediction_doc =
@@ -419,14 +655,15 @@ InvalidPrediction for a non-finite coordinate.)doc";
 
 const char* const triangulation_doc = R"doc(Triangulation(points, *, parallel=False)
 
-The Delaunay triangulation of points that move (a kinetic triangulation). The constructor
-builds the Delaunay triangulation of `points` ((n, 2) array) with delaunay_from_prediction()
-and no prediction, and keeps one vertex per point index (indices of equal points share one).
-move(new_points) repairs it in place; .triangles gives its faces.)doc";
+The Delaunay triangulation of points that move (a kinetic triangulation), on the C++ class
+Kinetic_Delaunay_triangulation_2. The constructor builds the Delaunay triangulation of
+`points` ((n, 2) array) with delaunay_from_prediction() and no prediction, and keeps one vertex
+per point index (indices of equal points share one). move(new_points) repairs it in place;
+.triangles gives its faces. Delaunay is the same with scipy's attributes.)doc";
 
 const char* const move_doc = R"doc(Moves point i to new_points[i] for every i and makes the triangulation the Delaunay
 triangulation of the new points. new_points must have the same number of points (ValueError
-otherwise).
+otherwise). The rule is the C++ Kinetic_Delaunay_triangulation_2::move()'s:
 
 - Usual case: each vertex's point is set (vertex->set_point()) and make_delaunay() repairs the
   triangulation in place, whatever the moves (inverted faces, a change of dimension): the
@@ -443,6 +680,48 @@ otherwise).
 parallel: CGAL::Parallel_if_available_tag for make_delaunay() or the rebuild; same result.
 Returns the stats dict of the C++ call (as delaunay_from_prediction()), plus 'rebuilt': True
 when the triangulation was rebuilt instead of repaired in place.)doc";
+
+const char* const delaunay_doc = R"doc(Delaunay(points, prediction=None, *, parallel=False)
+
+A drop-in for scipy.spatial.Delaunay in 2D: the same attributes with the same conventions and
+dtypes, computed exactly (CGAL's exact predicates; co-circular ties broken by CGAL's symbolic
+perturbation, so the triangles are those of CGAL's Delaunay_triangulation_2 of the points).
+
+points:     (n, 2) array of coordinates.
+prediction: None, an (m, 3) integer array of predicted triangles (any faces: wrong ones only
+            cost time), or an object with .simplices (a previous Delaunay, scipy's included).
+parallel:   use TBB's threads when the module has them (same result).
+furthest_site, incremental: only False (ValueError otherwise); qhull_options: accepted and
+            ignored (the triangulation is always the exact one).
+
+Attributes (computed when first read, kept until move()): points, simplices (each
+counterclockwise), neighbors (neighbors[i, j] opposite simplices[i, j], -1 on the hull),
+convex_hull, vertex_neighbor_vertices, coplanar (here: the duplicate points, which are no
+vertex), vertex_to_simplex, npoints, nsimplex, ndim, min_bound, max_bound, and statistics (the
+C++ call's stats). Methods: find_simplex(xi), move(new_points).
+
+Differences from scipy: fewer than three points, or all points collinear, give an empty
+simplices array instead of an exception (QhullError); for equal points the smallest index is
+the vertex and the others are in coplanar. transform, equations, plane_distance, lift_points,
+add_points and the furthest-site triangulation are not provided.)doc";
+
+const char* const find_simplex_doc = R"doc(find_simplex(xi, bruteforce=False, tol=None)
+
+The simplex holding each point of xi (an array of shape (..., 2)), as an intc array of shape
+xi.shape[:-1]; -1 outside the convex hull (and for non-finite points). Exact: triangles are
+closed, a point on an edge or a vertex gets one of the triangles holding it. The points are
+visited in Hilbert order, each located by CGAL's walk from the previous answer.
+bruteforce and tol are accepted for scipy's code and ignored.)doc";
+
+const char* const delaunay_move_doc = R"doc(move(new_points, *, parallel=None)
+
+Moves point i to new_points[i] for every i (the same number of points) and makes the
+triangulation the Delaunay triangulation of the new points: repaired in place by
+make_delaunay(), or rebuilt with the current triangles as the prediction when points merge or
+split (the rule of Triangulation.move and of the C++ Kinetic_Delaunay_triangulation_2). The
+attributes are those of the new points afterwards. parallel: None uses the constructor's.
+Returns the stats dict, with 'rebuilt'. A non-finite coordinate raises InvalidPrediction and
+changes nothing.)doc";
 
 const char* const emst_doc = R"doc(The Euclidean minimum spanning tree of `points`, read off their Delaunay triangulation, which
 is built from a prediction: exactly one of
@@ -523,25 +802,14 @@ PYBIND11_MODULE(delaunay_from_prediction, m)
       .def(py::init([](const py::object& points_in, bool parallel) {
              const std::vector<Point> points = read_points(points_in, "points");
              py::gil_scoped_release nogil;
-             return std::make_unique<Triangulation>(points, parallel);
+             return std::make_unique<Triangulation>(points, std::vector<Face>(), parallel);
            }),
            py::arg("points"), py::kw_only(), py::arg("parallel") = false,
            "Builds the Delaunay triangulation of points, an (n, 2) array (see the class documentation).")
       .def(
           "move",
           [](Triangulation& t, const py::object& points_in, bool parallel) {
-            const std::vector<Point> points = read_points(points_in, "new_points");
-            if(points.size() != t.number_of_points())
-              throw py::value_error("new_points must have the triangulation's " + std::to_string(t.number_of_points()) +
-                                    " points, got " + std::to_string(points.size()));
-            Triangulation::Move_result result;
-            {
-              py::gil_scoped_release nogil;
-              result = t.move(points, parallel);
-            }
-            py::dict stats = stats_dict(result.stats);
-            stats["rebuilt"] = result.rebuilt;
-            return stats;
+            return move_points(t.core, points_in, parallel);
           },
           py::arg("new_points"), py::kw_only(), py::arg("parallel") = false, move_doc)
       .def_property_readonly(
@@ -550,25 +818,114 @@ PYBIND11_MODULE(delaunay_from_prediction, m)
             std::vector<std::int64_t> triangles;
             {
               py::gil_scoped_release nogil;
-              triangles = t.triangles();
+              triangles = t.core.read([](const Kinetic& k) { return triangles_of(k.triangulation()); });
             }
             return as_array(std::move(triangles), 3);
           },
           "(k, 3) int64 array of point indices, each face counterclockwise (a new array each time; "
           "equal points: the smallest of their indices).")
       .def_property_readonly(
-          "points",
-          [](const Triangulation& t) {
-            std::vector<double> xy = t.coordinates();
-            py::array_t<double> a({py::ssize_t(t.number_of_points()), py::ssize_t(2)});
-            std::copy(xy.begin(), xy.end(), a.mutable_data());
-            return a;
-          },
+          "points", [](const Triangulation& t) { return coordinates(t.core); },
           "(n, 2) float64 array: a copy of the current points, by index.")
-      .def_property_readonly("number_of_points", &Triangulation::number_of_points, "n, the number of point indices.")
+      .def_property_readonly(
+          "number_of_points", [](const Triangulation& t) { return t.core.number_of_points(); },
+          "n, the number of point indices.")
       .def("__repr__", [](const Triangulation& t) {
-        return "<delaunay_from_prediction.Triangulation of " + std::to_string(t.number_of_points()) + " points, " +
-               std::to_string(t.number_of_triangles()) + " triangles>";
+        const std::size_t triangles = t.core.read(
+            [](const Kinetic& k) { return k.triangulation().dimension() == 2 ? k.triangulation().number_of_faces() : 0; });
+        return "<delaunay_from_prediction.Triangulation of " + std::to_string(t.core.number_of_points()) + " points, " +
+               std::to_string(triangles) + " triangles>";
+      });
+
+  py::class_<Delaunay>(m, "Delaunay", delaunay_doc)
+      .def(py::init([](const py::object& points_in, const py::object& prediction, bool parallel, bool furthest_site,
+                       bool incremental, const py::object& qhull_options) {
+             if(furthest_site)
+               throw py::value_error("Delaunay(furthest_site=True): the furthest-site triangulation is not provided");
+             if(incremental)
+               throw py::value_error("Delaunay(incremental=True): add_points() is not provided; build a new "
+                                     "Delaunay, or move() the points");
+             (void)qhull_options; // accepted for scipy's code; the result is always the exact DT
+             const std::vector<Point> points = read_points(points_in, "points");
+             const py::object faces_in =
+                 !prediction.is_none() && py::hasattr(prediction, "simplices") ? prediction.attr("simplices") : prediction;
+             const std::vector<Face> faces = read_indices<3>(faces_in, "prediction", points.size());
+             std::unique_ptr<Delaunay> d;
+             {
+               py::gil_scoped_release nogil;
+               d = std::make_unique<Delaunay>(points, faces, parallel);
+             }
+             d->points = xy_array(points);
+             py::dict stats = stats_dict(d->core.build_statistics());
+             stats["rebuilt"] = false;
+             d->statistics = stats;
+             return d;
+           }),
+           py::arg("points"), py::arg("prediction") = py::none(), py::kw_only(), py::arg("parallel") = false,
+           py::arg("furthest_site") = false, py::arg("incremental") = false, py::arg("qhull_options") = py::none())
+      .def_readonly("points", &Delaunay::points, "(n, 2) float64 array: the points (after move(), the new ones).")
+      .def_property_readonly(
+          "simplices", [](Delaunay& d) { return d.simplices_and_neighbors().first; },
+          "(nsimplex, 3) intc array: the triangles' point indices, each counterclockwise.")
+      .def_property_readonly(
+          "neighbors", [](Delaunay& d) { return d.simplices_and_neighbors().second; },
+          "(nsimplex, 3) intc array: neighbors[i, j] is the simplex opposite simplices[i, j], -1 on the hull.")
+      .def_property_readonly(
+          "convex_hull",
+          [](Delaunay& d) {
+            return d.cached(d.convex_hull_cache, [](const Kinetic& k) {
+              return intc_array(convex_hull_edges(k.triangulation()), 2);
+            });
+          },
+          "(h, 2) intc array: the hull's edges, counterclockwise around the hull (empty below dimension 2).")
+      .def_property_readonly(
+          "vertex_neighbor_vertices",
+          [](Delaunay& d) {
+            return d.cached(d.vertex_neighbor_vertices_cache, [&](const Kinetic& k) {
+              auto csr = vertex_neighbor_vertices(k.triangulation(), k.number_of_points());
+              return py::object(py::make_tuple(intc_array(std::move(csr.first), 0), intc_array(std::move(csr.second), 0)));
+            });
+          },
+          "(indptr, indices), intc arrays: the neighbours of point k are indices[indptr[k]:indptr[k+1]].")
+      .def_property_readonly(
+          "coplanar",
+          [](Delaunay& d) {
+            return d.cached(d.coplanar_cache, [](const Kinetic& k) { return intc_array(coplanar_points(k), 3); });
+          },
+          "(c, 3) intc array: each point that is no vertex (a duplicate of a smaller index), a simplex holding its "
+          "vertex (-1 below dimension 2), and that vertex's point index.")
+      .def_property_readonly(
+          "vertex_to_simplex",
+          [](Delaunay& d) {
+            return d.cached(d.vertex_to_simplex_cache, [](const Kinetic& k) { return intc_array(vertex_to_simplex(k), 0); });
+          },
+          "(n,) intc array: a simplex holding each point's vertex (-1 below dimension 2).")
+      .def_property_readonly("npoints", [](const Delaunay& d) { return d.core.number_of_points(); }, "n.")
+      .def_property_readonly(
+          "nsimplex", [](Delaunay& d) { return py::len(d.simplices_and_neighbors().first); }, "The number of simplices.")
+      .def_property_readonly("ndim", [](const Delaunay&) { return 2; }, "2.")
+      .def_property_readonly(
+          "min_bound", [](const Delaunay& d) { return d.points.attr("min")(py::arg("axis") = 0); },
+          "(2,) float64: the smallest coordinates.")
+      .def_property_readonly(
+          "max_bound", [](const Delaunay& d) { return d.points.attr("max")(py::arg("axis") = 0); },
+          "(2,) float64: the largest coordinates.")
+      .def_readonly("statistics", &Delaunay::statistics, "The stats dict of the constructor's or last move()'s call.")
+      .def("find_simplex", &Delaunay::find_simplex, py::arg("xi"), py::arg("bruteforce") = false,
+           py::arg("tol") = py::none(), find_simplex_doc)
+      .def(
+          "move",
+          [](Delaunay& d, const py::object& points_in, const py::object& parallel) {
+            py::dict stats = move_points(d.core, points_in, parallel.is_none() ? d.parallel : parallel.cast<bool>());
+            d.points = coordinates(d.core);
+            d.forget();
+            d.statistics = stats;
+            return stats;
+          },
+          py::arg("new_points"), py::kw_only(), py::arg("parallel") = py::none(), delaunay_move_doc)
+      .def("__repr__", [](Delaunay& d) {
+        return "<delaunay_from_prediction.Delaunay of " + std::to_string(d.core.number_of_points()) + " points, " +
+               std::to_string(py::len(d.simplices_and_neighbors().first)) + " simplices>";
       });
 
   m.def(

@@ -11,7 +11,8 @@
 #  - malformed files: exit status 1 and a message "file:line: ..." naming the right line;
 #    a wrong command line: exit status 2;
 #  - kinetic: frames repaired one after another, each equal to CGAL's build (--check), one
-#    output per frame with '{}', points that meet and part again, a frame of another size.
+#    output per frame with '{}', points that meet and part again (rebuilt), that meet and
+#    stay equal (in place), --cgal, a frame of another size.
 set -uo pipefail
 
 dfp=$1
@@ -192,6 +193,12 @@ expect_status 0 kinetic a.node frame1.node --prediction a.ele -o last.off --thre
 awk 'NR == 1 { print; next } $1 == 2 { print $1, 0.25, 0.75; next } $1 == 1 { print $1, 0.25, 0.75; next } { print }' a.node > meet.node
 expect_status 0 kinetic a.node meet.node frame2.node --check --stats
 grep -q "^frame 1: .*rebuilt" out.txt || fail "kinetic: points that meet should rebuild: $(cat out.txt)"
+grep -q "^frame 2: .*rebuilt" out.txt || fail "kinetic: points that part should rebuild: $(cat out.txt)"
+# Points that met and stay equal move in place.
+awk 'NR == 1 { print; next } { print $1, $2 + 0.001, $3 - 0.002 }' meet.node > meet_shifted.node
+expect_status 0 kinetic a.node meet.node meet_shifted.node --check --stats
+if grep -q "^frame 2: .*rebuilt" out.txt; then fail "kinetic: equal points that stay equal should move in place: $(cat out.txt)"; fi
+expect_status 0 kinetic a.node frame1.node frame2.node --cgal --check
 head -n 100 a.node | awk 'NR == 1 { print 99, 2, 0, 0; next } { print }' > short.node
 expect_status 1 kinetic a.node short.node
 expect_message "short.node: the frame has 99 points, the first frame 3000"
