@@ -124,7 +124,7 @@ def path(stats):
     if stats.get("rebuilt"):
         return f"rebuilt, flips {stats['flips']}"
     if stats["fell_back"]:
-        return "CGAL's build (no prediction)" if stats["faces_in"] == 0 else "fell back to CGAL's build: " + stats["fallback_reason"]
+        return "built from scratch (no prediction)" if stats["faces_in"] == 0 else "fell back to a build from scratch: " + stats["fallback_reason"]
     return f"predict, flips {stats['flips']}"
 
 
@@ -206,19 +206,19 @@ def main():
 
     # Rows: phase -> list of (key, description, function(state) -> (seconds, result, note)).
     # state: the objects built in the build phase of the current repetition.
-    def scipy_build(p):
+    def delaunay_build(delaunay_class, *args):
+        """scipy's or the module's Delaunay(*args), its simplices and neighbors read."""
         def f():
-            d = scipy.spatial.Delaunay(p)
+            d = delaunay_class(*args)
             d.simplices, d.neighbors
             return d
         return f
 
+    def scipy_build(p):
+        return delaunay_build(scipy.spatial.Delaunay, p)
+
     def dfp_build(p, pred=None):
-        def f():
-            d = dfp.Delaunay(p, pred)
-            d.simplices, d.neighbors
-            return d
-        return f
+        return delaunay_build(dfp.Delaunay, p, pred)
 
     def mpl_build(x, y):
         def f():

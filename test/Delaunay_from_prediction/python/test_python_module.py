@@ -19,18 +19,11 @@ import scipy.sparse.csgraph
 import scipy.spatial
 
 import delaunay_from_prediction as dfp
+from triangle_util import oriented, uniform
 
 # ----------------------------------------------------------------------------------------------
 # Helpers
 
-
-def oriented(triangles):
-    """The triangles as a sorted array, each rotated to start at its smallest index (so that
-    the orientation is kept and compared)."""
-    t = np.asarray(triangles, dtype=np.int64).reshape(-1, 3)
-    first = np.argmin(t, axis=1)
-    t = np.take_along_axis(t, (first[:, None] + np.arange(3)) % 3, axis=1)
-    return t[np.lexsort(t.T[::-1])]
 
 
 def unoriented(triangles):
@@ -71,9 +64,6 @@ def edges_of(triangles):
     e = np.concatenate([triangles[:, [0, 1]], triangles[:, [1, 2]], triangles[:, [2, 0]]])
     return np.unique(np.sort(e, axis=1), axis=0)
 
-
-def uniform(n, seed):
-    return np.random.default_rng(seed).random((n, 2))
 
 
 def assert_sorted_pairs(pairs):

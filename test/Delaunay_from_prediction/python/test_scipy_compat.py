@@ -16,6 +16,7 @@ import pytest
 import scipy.spatial
 
 import delaunay_from_prediction as dfp
+from triangle_util import oriented, uniform
 
 INTC = np.dtype(np.intc)
 
@@ -23,17 +24,6 @@ INTC = np.dtype(np.intc)
 # Helpers
 
 
-def uniform(n, seed):
-    return np.random.default_rng(seed).random((n, 2))
-
-
-def oriented(triangles):
-    """The triangles as a sorted array, each rotated to start at its smallest index (so that
-    the orientation is kept and compared)."""
-    t = np.asarray(triangles, dtype=np.int64).reshape(-1, 3)
-    first = np.argmin(t, axis=1)
-    t = np.take_along_axis(t, (first[:, None] + np.arange(3)) % 3, axis=1)
-    return t[np.lexsort(t.T[::-1])]
 
 
 def edge_set(edges):
