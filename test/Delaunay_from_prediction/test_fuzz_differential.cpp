@@ -415,7 +415,7 @@ static Case gen_case(unsigned long long seed, long long k)
       }
     }
     if(rng.get_int(0, 3) == 0)
-      c.strategy = rng.get_int(0, 7); // every Strategy
+      c.strategy = rng.get_int(0, 8); // every Strategy
     if(rng.get_int(0, 8) == 0)
       c.max_flips = rng.get_bool() ? 0 : rng.get_int(1, 6);
     if(rng.get_int(0, 6) == 0)
@@ -477,7 +477,7 @@ static Case gen_case(unsigned long long seed, long long k)
           c.pred_family = F_MD_ONTO; // could not keep them apart: then it must throw
     }
     if(rng.get_int(0, 3) == 0)
-      c.strategy = rng.get_int(0, 7); // every Strategy
+      c.strategy = rng.get_int(0, 8); // every Strategy
     if(rng.get_int(0, 8) == 0)
       c.max_flips = rng.get_bool() ? 0 : rng.get_int(1, 6);
     break;
@@ -1036,6 +1036,15 @@ void run_sg(Checker& ck, const Case& c, bool exact)
   check_stats(ck, s, 0, (long long)P.size(), (long long)tr.number_of_vertices());
   if(s.edges_in != e.size())
     ck.fail("stats:edges_in", std::to_string(s.edges_in) + " vs " + std::to_string(e.size()));
+  // Section 3 as written, on the same graph.
+  Tr t3;
+  expect_no_throw(ck, [&] {
+    s = DFP::delaunay_from_spanning_graph(P, e, t3, DFP::parameters::strategy(DFP::Strategy::section_3));
+  });
+  if(!ck.failure.empty())
+    return;
+  check_result(ck, t3, P, exact);
+  check_stats(ck, s, 0, (long long)P.size(), (long long)t3.number_of_vertices());
 }
 
 template <class Tr, class K>

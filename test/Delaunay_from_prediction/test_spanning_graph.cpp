@@ -11,7 +11,8 @@
 // random and degenerate points; bad input throws with nothing changed; the statistics show
 // the walks were used (and a random tree detected). Also the preorder forest the engine
 // scans, on random graphs, and the faces entry point on self-crossing triangulations, by
-// default and with Strategy::spanning_tree.
+// default and with Strategy::spanning_tree. Every graph also with Strategy::section_3 (Section
+// 3 as written), whose samples and conflict lists are checked against brute force.
 
 #include <CGAL/Delaunay_from_prediction/spanning_graph.h> // first: the header is self-contained
 
@@ -129,7 +130,34 @@ struct Spanning_graph_test
     }
     DFP_CHECK(s.edges_in == std::size_t(std::distance(std::begin(edges), std::end(edges))));
     DFP_CHECK(s.points_reinserted == points.size());
+    run_section_3<DT>(points, edges, exact);
     return s;
+  }
+
+  // The same with Strategy::section_3 (Section 3 as written): the same triangulation, never
+  // a heuristic fallback (exact traits), the rounds of Theorem 3.3 when the points span a
+  // triangle.
+  template <class DT, class EdgeRange>
+  void run_section_3(const Points& points, const EdgeRange& edges, bool exact)
+  {
+    Scope c("Strategy::section_3");
+    DT dt;
+    dt.insert(make_point<K>(-50., 7.));
+    const DFP::Statistics s =
+        DFP::delaunay_from_spanning_graph(points, edges, dt, DFP::parameters::strategy(DFP::Strategy::section_3));
+    if(!exact) {
+      DFP_CHECK(dt.tds().is_valid());
+      DFP_CHECK(dt.number_of_vertices() == smallest_indices(points).size());
+      return;
+    }
+    check_is_cgal_delaunay(dt, points);
+    DFP_CHECK(!s.fell_back);
+    DFP_CHECK(s.points_reinserted == points.size());
+    if(dt.dimension() == 2) {
+      DFP_CHECK_MSG(s.insertion_rounds == DFP::internal::theorem_3_3_divisors(points.size()).size(),
+                    s.insertion_rounds);
+      DFP_CHECK(s.largest_conflict_list <= s.conflict_list_entries);
+    }
   }
 
   void graphs_on(const XYs& xy, bool exact = true)
@@ -356,6 +384,158 @@ void faces_with_crossings()
   }
 }
 
+// Section 3 as written, inside: each round's samples are nested prefixes of the random order;
+// every point outside the sample is located in a face of the sample's triangulation whose
+// closure holds it; the conflict list of each face holds exactly the points outside the
+// sample inside its circumcircle (checked against every pair, and against the kernel's
+// in-circle test where the point is not on the circle); the statistics add up.
+template <class K>
+void conflict_lists_on(const XYs& xy, const Edges& edges)
+{
+  using Point = typename K::Point_2;
+  const std::vector<Point> points = to_points<K>(xy);
+  const std::size_t n = points.size();
+  std::vector<std::uint32_t> ends;
+  for(const Edge& e : edges)
+    ends.insert(ends.end(), {std::uint32_t(e.first), std::uint32_t(e.second)});
+  DT_with_info<K> dt;
+  DFP::Statistics stats;
+  std::size_t entries = 0, largest = 0, rounds_seen = 0;
+  const K kernel;
+  auto on_round = [&](const auto& rounds, const DFP::internal::Conflict_lists& lists) {
+    ++rounds_seen;
+    const auto& flat = rounds.flat();
+    const std::size_t faces = flat.number_of_faces();
+    DFP_CHECK(lists.offsets.size() == faces + 1);
+    std::size_t bad_faces = 0, bad_locations = 0, wrong_entries = 0, kernel_disagrees = 0;
+    for(std::size_t t = 0; t < faces; ++t)
+      for(int i = 0; i < 3; ++i)
+        if(flat.vertex(t, i) != flat.infinite && !rounds.in_sample(flat.vertex(t, i)))
+          ++bad_faces;
+    for(std::size_t r = 0; r < n; ++r) {
+      if(rounds.in_sample(r))
+        continue;
+      const Point& p = flat.point(std::uint32_t(r));
+      const std::size_t t = rounds.location()[r];
+      int inf = -1;
+      for(int i = 0; i < 3; ++i)
+        if(flat.vertex(t, i) == flat.infinite)
+          inf = i;
+      if(inf >= 0) { // strictly outside the hull edge
+        if(kernel.orientation_2_object()(flat.point(flat.vertex(t, (inf + 1) % 3)),
+                                         flat.point(flat.vertex(t, (inf + 2) % 3)), p) != CGAL::LEFT_TURN)
+          ++bad_locations;
+      } else {
+        for(int i = 0; i < 3; ++i)
+          if(kernel.orientation_2_object()(flat.point(flat.vertex(t, i)), flat.point(flat.vertex(t, (i + 1) % 3)),
+                                           p) == CGAL::RIGHT_TURN)
+            ++bad_locations;
+      }
+      bool equals_vertex = false;
+      for(int i = 0; i < 3; ++i)
+        equals_vertex |= flat.vertex(t, i) != flat.infinite && flat.point(flat.vertex(t, i)) == p;
+      if(equals_vertex != rounds.located_at_vertex(r))
+        ++bad_locations;
+    }
+    for(std::size_t t = 0; t < faces; ++t) {
+      std::vector<std::uint32_t> listed(lists.ranks.begin() + lists.offsets[t], lists.ranks.begin() + lists.offsets[t + 1]);
+      std::sort(listed.begin(), listed.end());
+      const bool finite = flat.vertex(t, 0) != flat.infinite && flat.vertex(t, 1) != flat.infinite &&
+                          flat.vertex(t, 2) != flat.infinite;
+      for(std::size_t r = 0; r < n; ++r) {
+        if(rounds.in_sample(r) || rounds.located_at_vertex(r))
+          continue;
+        const Point& p = flat.point(std::uint32_t(r));
+        const bool conflict = flat.in_conflict(std::uint32_t(t), p);
+        if(conflict != std::binary_search(listed.begin(), listed.end(), std::uint32_t(r)))
+          ++wrong_entries;
+        if(finite) {
+          const CGAL::Oriented_side side = kernel.side_of_oriented_circle_2_object()(
+              flat.point(flat.vertex(t, 0)), flat.point(flat.vertex(t, 1)), flat.point(flat.vertex(t, 2)), p);
+          if(side != CGAL::ON_ORIENTED_BOUNDARY && (side == CGAL::ON_POSITIVE_SIDE) != conflict)
+            ++kernel_disagrees;
+        }
+      }
+      entries += listed.size();
+      largest = (std::max)(largest, listed.size());
+    }
+    DFP_CHECK_MSG(bad_faces == 0, bad_faces << " face corners outside the sample");
+    DFP_CHECK_MSG(bad_locations == 0, bad_locations << " points not in the face they are located in");
+    DFP_CHECK_MSG(wrong_entries == 0, wrong_entries << " (face, point) pairs listed wrongly");
+    DFP_CHECK_MSG(kernel_disagrees == 0, kernel_disagrees << " conflicts the kernel's in-circle test denies");
+  };
+  DFP::internal::build_by_conflict_list_rounds(dt, points.begin(), n, ends, stats, on_round);
+  check_is_cgal_delaunay(dt, points);
+  DFP_CHECK_MSG(stats.conflict_list_entries == entries, stats.conflict_list_entries << " != " << entries);
+  DFP_CHECK_MSG(stats.largest_conflict_list == largest, stats.largest_conflict_list << " != " << largest);
+  DFP_CHECK_MSG(rounds_seen >= 1 && rounds_seen < stats.insertion_rounds, rounds_seen << " of " << stats.insertion_rounds);
+  DFP_CHECK(stats.points_located > 0);
+}
+
+// The nested samples of Theorem 3.3: prefixes of one random order of the points, every point
+// once, sample i holding at most |P^| / s_i points and the last one all.
+void nested_samples()
+{
+  CGAL::Random rng(4242);
+  for(std::size_t n : {1u, 5u, 100u, 5000u}) {
+    Scope s("n = ", n);
+    const Edges tree = random_tree(n, rng);
+    std::vector<std::uint32_t> ends;
+    for(const Edge& e : tree)
+      ends.insert(ends.end(), {std::uint32_t(e.first), std::uint32_t(e.second)});
+    const auto forest = DFP::internal::preorder_spanning_forest(DFP::internal::adjacency_of(ends, n));
+    const std::vector<std::size_t> divisors = DFP::internal::theorem_3_3_divisors(n);
+    DFP_CHECK(divisors.front() == std::max<std::size_t>(n, 1) && divisors.back() == 1);
+    for(std::size_t i = 1; i < divisors.size(); ++i)
+      DFP_CHECK(divisors[i] < divisors[i - 1]);
+    const auto samples = DFP::internal::sample_multiset(forest, divisors, 7);
+    std::size_t copies = 0;
+    for(std::size_t r = 0; r < n; ++r)
+      copies += std::max<std::size_t>(1, forest.degree[r]);
+    DFP_CHECK(samples.end.size() == divisors.size());
+    std::vector<std::uint32_t> sorted = samples.order;
+    std::sort(sorted.begin(), sorted.end());
+    DFP_CHECK(sorted.size() == n && std::adjacent_find(sorted.begin(), sorted.end()) == sorted.end());
+    for(std::size_t i = 0; i < divisors.size(); ++i) {
+      DFP_CHECK(i == 0 || samples.end[i] >= samples.end[i - 1]);
+      DFP_CHECK_MSG(samples.end[i] <= copies / divisors[i] + 1, samples.end[i] << " > " << copies / divisors[i]);
+    }
+    DFP_CHECK(samples.end.back() == n);
+  }
+}
+
+void conflict_lists()
+{
+  CGAL::Random rng(515);
+  using K = CGAL::Epick;
+  {
+    Scope s("uniform 400, EMST");
+    const XYs xy = uniform_points(400, rng);
+    conflict_lists_on<K>(xy, emst_of<K>(to_points<K>(xy)));
+  }
+  {
+    Scope s("uniform 400, random tree");
+    const XYs xy = uniform_points(400, rng);
+    conflict_lists_on<K>(xy, random_tree(xy.size(), rng));
+  }
+  {
+    Scope s("grid 14 x 14 with duplicates, EMST with wrong edges");
+    const XYs xy = with_duplicates(grid_points(14, 14, rng), 40, rng);
+    conflict_lists_on<K>(xy, with_wrong_edges(emst_of<K>(to_points<K>(xy)), 20, xy.size(), rng));
+  }
+  {
+    Scope s("lattice points on circles, Epeck, Delaunay edges");
+    const XYs xy = lattice_circle_points(40, rng, 10);
+    conflict_lists_on<CGAL::Epeck>(xy, delaunay_edges<CGAL::Epeck>(to_points<CGAL::Epeck>(xy)));
+  }
+  {
+    Scope s("collinear but one, no edges");
+    XYs xy = collinear_points(150, rng);
+    xy.push_back(XY{0.3, 0.9});
+    conflict_lists_on<K>(xy, Edges());
+  }
+}
+
 // Bad input: an end out of range (negative included) or a loop throws Invalid_prediction
 // naming the edge, a non-finite point too, and the triangulation is left as it was.
 void bad_input()
@@ -513,6 +693,8 @@ int main()
   }
   DFP_RUN(walks_are_used());
   DFP_RUN(faces_with_crossings());
+  DFP_RUN(nested_samples());
+  DFP_RUN(conflict_lists());
   DFP_RUN(bad_input());
   return finish("test_spanning_graph");
 }

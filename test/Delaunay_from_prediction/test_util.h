@@ -195,12 +195,13 @@ namespace dfp_test {
 namespace DFP = CGAL::Delaunay_from_prediction;
 
 // The ways the tests call delaunay_from_prediction(): each Strategy, and max_flips(0).
-enum class Mode { defaults, automatic, carve, t_division, regions, flips, rebuild, spanning_tree, no_flips };
+enum class Mode { defaults, automatic, carve, t_division, regions, flips, rebuild, spanning_tree, section_3, no_flips };
 // Every Strategy, and every Strategy and max_flips(0).
-const Mode strategy_modes[] = {Mode::defaults, Mode::automatic, Mode::carve,   Mode::t_division,
-                               Mode::regions,  Mode::flips,     Mode::rebuild, Mode::spanning_tree};
-const Mode all_modes[] = {Mode::defaults, Mode::automatic, Mode::carve,         Mode::t_division, Mode::regions,
-                          Mode::flips,    Mode::rebuild,   Mode::spanning_tree, Mode::no_flips};
+const Mode strategy_modes[] = {Mode::defaults, Mode::automatic, Mode::carve,         Mode::t_division, Mode::regions,
+                               Mode::flips,    Mode::rebuild,   Mode::spanning_tree, Mode::section_3};
+const Mode all_modes[] = {Mode::defaults, Mode::automatic, Mode::carve,         Mode::t_division,
+                          Mode::regions,  Mode::flips,     Mode::rebuild,       Mode::spanning_tree,
+                          Mode::section_3, Mode::no_flips};
 
 inline const char* name_of(Mode m)
 {
@@ -212,6 +213,7 @@ inline const char* name_of(Mode m)
   case Mode::regions: return "regions";
   case Mode::flips: return "flips";
   case Mode::spanning_tree: return "spanning_tree";
+  case Mode::section_3: return "section_3";
   case Mode::no_flips: return "max_flips(0)";
   default: return "rebuild";
   }
@@ -230,6 +232,7 @@ DFP::Statistics with_mode(Mode m, const F& body, const DFP::Tuning& tuning = DFP
   case Mode::regions: return body(P::strategy(DFP::Strategy::regions));
   case Mode::flips: return body(P::strategy(DFP::Strategy::flips));
   case Mode::spanning_tree: return body(P::strategy(DFP::Strategy::spanning_tree));
+  case Mode::section_3: return body(P::strategy(DFP::Strategy::section_3));
   case Mode::no_flips: return body(P::max_flips(std::size_t(0)));
   default: return body(P::strategy(DFP::Strategy::rebuild));
   }

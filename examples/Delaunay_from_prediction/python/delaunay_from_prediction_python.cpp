@@ -224,6 +224,9 @@ py::dict stats_dict(const DFP::Statistics& s)
   d["faces_visited"] = s.faces_visited;
   d["walk_fallbacks"] = s.walk_fallbacks;
   d["insertion_rounds"] = s.insertion_rounds;
+  d["conflict_list_entries"] = s.conflict_list_entries;
+  d["largest_conflict_list"] = s.largest_conflict_list;
+  d["points_relocated"] = s.points_relocated;
   d["fallback_reason"] = std::string(DFP::to_string(s.outcome));
   return d;
 }

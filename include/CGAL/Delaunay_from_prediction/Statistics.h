@@ -40,6 +40,7 @@ enum class Outcome {
   // Chosen by the caller or the traits.
   rebuild_requested, ///< the rebuild strategy was chosen
   spanning_tree_requested, ///< the spanning_tree strategy was chosen
+  section_3_requested, ///< the section_3 strategy was chosen
   inexact_predicates, ///< the traits' predicates are not exact: the faces are decided by exact predicates on double coordinates
   // The prediction, as the import reads it.
   too_many_indices, ///< too many points or faces for 32-bit indices
@@ -100,6 +101,7 @@ inline const char* to_string(Outcome outcome)
       "",
       "the rebuild strategy was chosen",
       "the spanning_tree strategy was chosen",
+      "the section_3 strategy was chosen",
       "the traits' predicates are not exact: the faces are decided by exact predicates on double coordinates",
       "too many points or faces for 32-bit indices",
       "there are no faces",
@@ -220,8 +222,19 @@ struct Statistics
   /// far from its disk, mostly).
   std::size_t walk_fallbacks = 0;
   /// number of rounds of the gradation (random samples) that inserted the points (BrioDC: the
-  /// number of samples).
+  /// number of samples; `Strategy::section_3`: the samples \f$R_1, \dots, R_\ell\f$ of
+  /// Theorem 3.3).
   std::size_t insertion_rounds = 0;
+  /// `Strategy::section_3`: the total size of the conflict lists Lemma 3.2 computed, over all
+  /// rounds (for each point outside the round's sample, the number of faces of the sample's
+  /// Delaunay triangulation whose circumcircle holds it).
+  std::size_t conflict_list_entries = 0;
+  /// `Strategy::section_3`: the longest conflict list of a face, over all rounds.
+  std::size_t largest_conflict_list = 0;
+  /// `Strategy::section_3`: the number of times a point waiting for its round's insertion was
+  /// moved to another face because an insertion changed the face holding it (the work of the
+  /// randomized incremental construction with conflict lists).
+  std::size_t points_relocated = 0;
   /// what the call made of the prediction: `Outcome::ok` when it was used, otherwise why the
   /// call built from scratch (`to_string(outcome)` says it in a sentence).
   Outcome outcome = Outcome::ok;
@@ -249,7 +262,8 @@ inline std::ostream& operator<<(std::ostream& out, const Statistics& s)
       {"bad_regions", s.bad_regions},           {"boundary_vertices", s.boundary_vertices},
       {"edges_in", s.edges_in},                 {"points_located", s.points_located},
       {"faces_visited", s.faces_visited},       {"walk_fallbacks", s.walk_fallbacks},
-      {"insertion_rounds", s.insertion_rounds}};
+      {"insertion_rounds", s.insertion_rounds}, {"conflict_list_entries", s.conflict_list_entries},
+      {"largest_conflict_list", s.largest_conflict_list}, {"points_relocated", s.points_relocated}};
   for(const auto& c : counts)
     if(c.second != 0)
       out << c.first << ": " << c.second << "\n";

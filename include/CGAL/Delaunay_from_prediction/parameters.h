@@ -81,7 +81,21 @@ enum class Strategy {
   /// bound is not proven for this insertion, which has no conflict lists, see
   /// `delaunay_from_spanning_graph()`). Reported as a fallback, as `rebuild` is. Slower than
   /// the default on every prediction measured (see the user manual): selectable for comparison.
-  spanning_tree
+  spanning_tree,
+  /// Section 3 of the paper as written (Lemma 3.2, Theorem 3.3), in
+  /// `delaunay_from_spanning_graph()` and the functions built on it, and in
+  /// `delaunay_from_prediction()` along a spanning tree of the faces' edges (Corollaries 3.4
+  /// and 3.5; `make_delaunay()` treats it as `rebuild`): nested random samples of the points
+  /// weighted by their degree in the tree, with \f$s_1 = n\f$, \f$s_{i+1} = \lfloor \log_2
+  /// s_i \rfloor\f$, ..., \f$s_\ell = 1\f$; each round locates every point in the sample's
+  /// triangulation by walks along the tree capped at \f$\log_2 n\f$ faces, computes the
+  /// conflict lists by graph search, and builds the next sample's triangulation by randomized
+  /// incremental construction with those conflict lists. No heuristic fallback: a useless
+  /// graph costs what the analysis says. Two substitutions, named in the manual: a grid and
+  /// a walk for the \f$O(\log n)\f$ point location, and the incremental construction for
+  /// the per-cell lower envelopes. Reported as a fallback, as `spanning_tree` is. For
+  /// comparing the theory with the practical strategies; slower than the default.
+  section_3
 };
 
 /*!

@@ -14,6 +14,7 @@
 #include <CGAL/Delaunay_from_prediction/internal/toolbox/concurrency.h>
 #include <CGAL/Delaunay_from_prediction/internal/build/hierarchy.h>
 #include <CGAL/Delaunay_from_prediction/internal/check/input_check.h>
+#include <CGAL/Delaunay_from_prediction/internal/build/conflict_list_rounds.h>
 #include <CGAL/Delaunay_from_prediction/internal/build/spanning_tree_insertion.h>
 
 #include <cstddef>
@@ -85,18 +86,32 @@ points (co-circular ties broken by CGAL's symbolic perturbation), whatever the g
         assignable from `std::size_t`, every vertex's `info()` is set to the index of its point
         (for duplicate points, the smallest of their indices). A `CGAL::Triangulation_hierarchy_2`
         of one is kept as in `delaunay_from_prediction()`.
-\tparam NamedParameters a sequence of named parameters (none is used yet).
+\tparam NamedParameters a sequence of named parameters: `parameters::strategy(Strategy::section_3)`
+        builds by the paper's Section 3 as written instead (below); every other strategy means
+        the engine described above.
 
 \param points the points.
 \param edges the predicted graph.
 \param dt receives the result; cleared first.
-\param np optional named parameters, accepted for the interface to grow; none is used yet.
+\param np optional named parameters: `strategy`.
 
 \returns what the call did: `edges_in`, `points_located`, `faces_visited` (divided by
          `points_located`: the mean length of a walk), `walk_fallbacks`, `insertion_rounds`,
          `duplicate_points`, `fell_back`.
 \throws Invalid_prediction if a point has a non-finite coordinate, or an edge has an end out of
         range or joins a point to itself. Then `dt` is unchanged.
+
+With `parameters::strategy(Strategy::section_3)`, the build is Section 3 of the paper as
+written (Lemma 3.2 and the rounds of Theorem 3.3; \ref dfpSection3): samples
+\f$R_1 \subset \dots \subset R_\ell = P\f$ of the points weighted by tree degree, sizes
+\f$|\widehat P|/s_i\f$ with \f$s_1 = n\f$, \f$s_{i+1} = \lfloor\log_2 s_i\rfloor\f$; each
+round locates every point in \f$DT(R_i)\f$ by walks along the tree capped at \f$\log_2 n\f$
+faces, lists each point's conflicting faces by graph search, and builds \f$DT(R_{i+1})\f$ by
+randomized incremental construction with these conflict lists. No heuristic fallback; two
+substitutions (a grid and a walk for the \f$O(\log n)\f$ point location; the incremental
+construction for the per-cell lower envelopes) keep Theorem 3.3's bound from being proven for
+the code as it is. It also fills `conflict_list_entries`, `largest_conflict_list` and
+`points_relocated`.
 
 With traits whose predicates are not exact (e.g. `Simple_cartesian<double>`), the triangulation
 is built from scratch, decided by exact predicates on the coordinates rounded to double
@@ -114,7 +129,8 @@ Statistics delaunay_from_spanning_graph(const PointRange& points, const EdgeRang
     return internal::with_levels_rebuilt(
         dt, [&](auto& level0) { return delaunay_from_spanning_graph<ConcurrencyTag>(points, edges, level0, np); });
   } else { // the body below, not instantiated for a hierarchy
-  (void)np;
+  const Strategy strategy =
+      parameters::choose_parameter(parameters::get_parameter(np, internal_np::strategy), Strategy::automatic);
   Statistics stats;
   const auto point_at = std::begin(points);
   const std::size_t n = std::size_t(std::distance(std::begin(points), std::end(points)));
@@ -127,6 +143,8 @@ Statistics delaunay_from_spanning_graph(const PointRange& points, const EdgeRang
   dt.clear();
   if constexpr(internal::decides_by_exact_predicates<typename DT::Geom_traits>::value)
     internal::build_with_exact_predicates(dt, point_at, n, stats); // inexact predicates: decided by exact ones
+  else if(strategy == Strategy::section_3)
+    internal::build_by_conflict_list_rounds(dt, point_at, n, ends, stats);
   else
     internal::build_along_edges(dt, point_at, n, ends, stats);
   return stats;

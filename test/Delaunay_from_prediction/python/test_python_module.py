@@ -114,7 +114,8 @@ def test_stats_dict():
                 "edges_not_locally_delaunay", "points_unused", "duplicate_points", "input_reordered",
                 "faces_carved", "holes_refilled", "carve_rounds", "regions", "bad_regions",
                 "boundary_vertices", "edges_in", "points_located", "faces_visited", "walk_fallbacks",
-                "insertion_rounds", "fallback_reason"}
+                "insertion_rounds", "conflict_list_entries", "largest_conflict_list", "points_relocated",
+                "fallback_reason"}
     assert set(stats) == expected
     assert isinstance(stats["fallback_reason"], str) and stats["fallback_reason"] == ""
     assert isinstance(stats["fell_back"], bool) and isinstance(stats["flips"], int)

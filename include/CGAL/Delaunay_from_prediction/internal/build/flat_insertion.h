@@ -62,6 +62,15 @@ public:
   template <class PointAt>
   bool build(std::size_t m, PointAt point_at)
   {
+    store(m, point_at);
+    return start_with(m, [](std::size_t k) { return std::uint32_t(k); });
+  }
+
+  // Stores the points point_at(0), ..., point_at(m - 1) as ranks 0..m-1 (m < 2^32 - 1), and
+  // no face: start_with() and insert_from() insert them, in any order.
+  template <class PointAt>
+  void store(std::size_t m, PointAt point_at)
+  {
     CGAL_precondition(m < std::size_t(infinite));
     points_.clear();
     points_.reserve(m);
@@ -72,26 +81,37 @@ public:
       representative_[k] = std::uint32_t(k);
     vertices_.clear();
     adjacent_.clear();
-    if(m < 3)
+  }
+
+  // Builds the triangulation of the stored points of ranks rank_at(0), ..., rank_at(count - 1),
+  // inserted in this order, each located from the previous one. Returns false, with nothing
+  // built, when they do not span the plane.
+  template <class RankAt>
+  bool start_with(std::size_t count, RankAt rank_at)
+  {
+    vertices_.clear();
+    adjacent_.clear();
+    if(count < 3)
       return false;
     auto orientation = gt_.orientation_2_object();
+    const std::uint32_t a = rank_at(0);
     std::size_t b = 1;
-    while(b < m && points_[b] == points_[0])
+    while(b < count && points_[rank_at(b)] == points_[a])
       ++b;
     std::size_t c = b + 1;
-    while(c < m && orientation(points_[0], points_[b], points_[c]) == COLLINEAR)
+    while(c < count && orientation(points_[a], points_[rank_at(b)], points_[rank_at(c)]) == COLLINEAR)
       ++c;
-    if(c >= m)
+    if(c >= count)
       return false;
-    vertices_.reserve(6 * m);
-    adjacent_.reserve(6 * m);
-    if(orientation(points_[0], points_[b], points_[c]) == LEFT_TURN)
-      start(0, std::uint32_t(b), std::uint32_t(c));
+    vertices_.reserve(6 * points_.size());
+    adjacent_.reserve(6 * points_.size());
+    if(orientation(points_[a], points_[rank_at(b)], points_[rank_at(c)]) == LEFT_TURN)
+      start(a, rank_at(b), rank_at(c));
     else
-      start(0, std::uint32_t(c), std::uint32_t(b));
-    for(std::size_t k = 1; k < m; ++k)
+      start(a, rank_at(c), rank_at(b));
+    for(std::size_t k = 1; k < count; ++k)
       if(k != b && k != c)
-        insert(std::uint32_t(k));
+        insert(rank_at(k));
     return true;
   }
 
@@ -100,6 +120,101 @@ public:
   std::size_t neighbor(std::size_t t, int i) const { return adjacent_[3 * t + i] / 3; }
   // The rank of the vertex at point k's position: k itself, or an earlier point's rank.
   std::uint32_t representative(std::size_t k) const { return representative_[k]; }
+  const Point& point(std::uint32_t v) const { return points_[v]; }
+  bool is_infinite(std::size_t t) const
+  {
+    return vertices_[3 * t] == infinite || vertices_[3 * t + 1] == infinite || vertices_[3 * t + 2] == infinite;
+  }
+
+  // Where a visibility walk towards p ended: in `face`, whose closure holds p when `found`
+  // (with `collinear` edges of a finite face on p: 0 strictly inside, 1 on the edge opposite
+  // vertex `on_edge`, 2 at a vertex), or in an infinite face when p is strictly outside the
+  // hull; `found` false: the walk stopped at its cap.
+  struct Location
+  {
+    std::uint32_t face = 0;
+    int collinear = 0, on_edge = 0;
+    bool found = false;
+  };
+
+  // Visibility walk from face t towards p: cross an edge while p is strictly on its far side.
+  // It ends on a Delaunay triangulation (the lifting map orders the faces), in the face whose
+  // closure holds p, or in an infinite face when p is strictly outside the hull; or after
+  // `cap` faces entered. `steps` counts the faces entered.
+  Location walk(const Point& p, std::uint32_t t, std::size_t cap, std::size_t& steps) const
+  {
+    auto orientation = gt_.orientation_2_object();
+    if(is_infinite(t)) {
+      int i = 0;
+      while(vertices_[3 * t + i] != infinite)
+        ++i;
+      t = adjacent_[3 * t + i] / 3;
+    }
+    Location at;
+    std::uint32_t previous = infinite;
+    for(std::size_t entered = 0;;) {
+      bool moved = false;
+      at.collinear = 0;
+      for(int i = 0; i < 3; ++i) {
+        const std::uint32_t next = adjacent_[3 * t + i] / 3;
+        if(next == previous)
+          continue;
+        const Orientation o = orientation(point(vertices_[3 * t + ccw(i)]), point(vertices_[3 * t + cw(i)]), p);
+        if(o == RIGHT_TURN) {
+          previous = t;
+          t = next;
+          moved = true;
+          break;
+        }
+        if(o == COLLINEAR) {
+          ++at.collinear;
+          at.on_edge = i;
+        }
+      }
+      if(moved) {
+        ++steps;
+        if(++entered > cap && !is_infinite(t)) {
+          at.face = t;
+          return at;
+        }
+      }
+      if(!moved || is_infinite(t))
+        break;
+    }
+    at.face = t;
+    at.found = true;
+    return at;
+  }
+
+  // Inserts the stored point of rank q, walking from face t; with `touched` set, every face
+  // whose vertices the insertion changes (or creates) is appended to it. A point equal to a
+  // vertex's is not inserted (representative()). Afterwards last_face() is a face of q's
+  // vertex.
+  void insert_from(std::uint32_t q, std::uint32_t t, std::vector<std::uint32_t>* touched = nullptr)
+  {
+    last_ = t;
+    touched_ = touched;
+    insert(q);
+    touched_ = nullptr;
+  }
+  std::uint32_t last_face() const { return last_; }
+
+  // Whether the point p is in conflict with face t, as Delaunay_triangulation_2 decides it:
+  // strictly inside the circumcircle with CGAL's symbolic perturbation, or, for an infinite
+  // face, strictly on the outer side of its finite edge. (Its conflict faces are those the
+  // insertion of p destroys.)
+  bool in_conflict(std::uint32_t t, const Point& p) const
+  {
+    const std::uint32_t a = vertices_[3 * t], b = vertices_[3 * t + 1], c = vertices_[3 * t + 2];
+    auto orientation = gt_.orientation_2_object();
+    if(a == infinite)
+      return orientation(point(b), point(c), p) == LEFT_TURN;
+    if(b == infinite)
+      return orientation(point(c), point(a), p) == LEFT_TURN;
+    if(c == infinite)
+      return orientation(point(a), point(b), p) == LEFT_TURN;
+    return side_of_oriented_circle_perturbed(gt_, point(a), point(b), point(c), p) == ON_POSITIVE_SIDE;
+  }
 
   // Writes the faces into `tds`, whose faces are replaced: `vertex_of(rank)` gives the TDS
   // vertex of each inserted rank, `infinite_vertex` CGAL's infinite vertex. The TDS's face
@@ -160,11 +275,6 @@ private:
     last_ = 0;
   }
 
-  const Point& point(std::uint32_t v) const { return points_[v]; }
-  bool is_infinite(std::uint32_t t) const
-  {
-    return vertices_[3 * t] == infinite || vertices_[3 * t + 1] == infinite || vertices_[3 * t + 2] == infinite;
-  }
   std::uint32_t new_face()
   {
     vertices_.resize(vertices_.size() + 3);
@@ -179,42 +289,11 @@ private:
 
   void insert(std::uint32_t q)
   {
-    auto orientation = gt_.orientation_2_object();
     const Point& p = point(q);
-    std::uint32_t t = last_;
-    if(is_infinite(t)) {
-      int i = 0;
-      while(vertices_[3 * t + i] != infinite)
-        ++i;
-      t = adjacent_[3 * t + i] / 3;
-    }
-    // Visibility walk: cross an edge while p is strictly on its far side. It ends on a
-    // Delaunay triangulation (the lifting map orders the faces), in the face whose closure
-    // holds p, or in an infinite face when p is strictly outside the hull.
-    std::uint32_t previous = infinite;
-    int collinear = 0, on_edge = 0;
-    for(;;) {
-      bool moved = false;
-      collinear = 0;
-      for(int i = 0; i < 3; ++i) {
-        const std::uint32_t next = adjacent_[3 * t + i] / 3;
-        if(next == previous)
-          continue;
-        const Orientation o = orientation(point(vertices_[3 * t + ccw(i)]), point(vertices_[3 * t + cw(i)]), p);
-        if(o == RIGHT_TURN) {
-          previous = t;
-          t = next;
-          moved = true;
-          break;
-        }
-        if(o == COLLINEAR) {
-          ++collinear;
-          on_edge = i;
-        }
-      }
-      if(!moved || is_infinite(t))
-        break;
-    }
+    std::size_t steps = 0;
+    const Location at = walk(p, last_, std::size_t(-1), steps);
+    const std::uint32_t t = at.face;
+    const int collinear = at.collinear, on_edge = at.on_edge;
     if(is_infinite(t) || collinear == 0) {
       split_face(t, q);
     } else if(collinear == 1) {
@@ -237,6 +316,8 @@ private:
     const std::uint32_t a = vertices_[3 * t], b = vertices_[3 * t + 1], c = vertices_[3 * t + 2];
     const std::uint32_t n1 = adjacent_[3 * t + 1], n2 = adjacent_[3 * t + 2];
     vertices_[3 * t] = q;
+    if(touched_ != nullptr)
+      touched_->push_back(t);
     set_face(t1, a, q, c);
     set_face(t2, a, b, q);
     link(3 * t + 1, 3 * t1 + 0);
@@ -279,6 +360,8 @@ private:
 
   void set_face(std::uint32_t t, std::uint32_t a, std::uint32_t b, std::uint32_t c)
   {
+    if(touched_ != nullptr)
+      touched_->push_back(t);
     vertices_[3 * t] = a;
     vertices_[3 * t + 1] = b;
     vertices_[3 * t + 2] = c;
@@ -330,6 +413,7 @@ private:
   std::vector<std::uint32_t> vertices_, adjacent_; // 3 per face; adjacent_: 3 * face + slot of the twin
   std::vector<std::uint32_t> stack_;
   std::uint32_t last_ = 0; // a face holding the last point inserted
+  std::vector<std::uint32_t>* touched_ = nullptr; // insert_from()'s record of the faces changed
 };
 
 } // namespace internal

@@ -14,6 +14,7 @@
 #include <CGAL/Delaunay_from_prediction/internal/build/block_parallel_build.h>
 #include <CGAL/Delaunay_from_prediction/internal/build/prediction_regions_build.h>
 #include <CGAL/Delaunay_from_prediction/internal/build/rebuild.h>
+#include <CGAL/Delaunay_from_prediction/internal/build/conflict_list_rounds.h>
 #include <CGAL/Delaunay_from_prediction/internal/build/spanning_tree_insertion.h>
 #include <CGAL/Delaunay_from_prediction/internal/check/input_check.h>
 #include <CGAL/Delaunay_from_prediction/internal/check/prediction_screens.h>
@@ -74,7 +75,9 @@ public:
   Outcome reason_not_to_use_prediction() const
   {
     if(!options_.uses_prediction())
-      return options_.strategy == Strategy::rebuild ? Outcome::rebuild_requested : Outcome::spanning_tree_requested;
+      return options_.strategy == Strategy::rebuild         ? Outcome::rebuild_requested
+             : options_.strategy == Strategy::spanning_tree ? Outcome::spanning_tree_requested
+                                                            : Outcome::section_3_requested;
     if(!fits_)
       return Outcome::too_many_indices;
     return number_of_faces_ == 0 ? Outcome::no_faces : Outcome::ok;
@@ -180,8 +183,8 @@ public:
   }
 
   // A build from scratch: in spatial order (in blocks on several threads), or, with
-  // Strategy::spanning_tree, along a spanning tree of the faces' edges (Corollaries 3.4 and
-  // 3.5). Measured at 1e6 points on predictions that fall back (points moved by 0.3 to 1
+  // Strategy::spanning_tree or Strategy::section_3, along a spanning tree of the faces' edges
+  // (Corollaries 3.4 and 3.5). Measured at 1e6 points on predictions that fall back (points moved by 0.3 to 1
   // spacing, 1% of the points relabelled, random triples; bench_fallback.cpp), the spatial
   // order was as fast to 26% faster: the default.
   void rebuild()
@@ -190,8 +193,8 @@ public:
     const std::vector<std::uint32_t> grid_order = std::move(imported_.points_in_grid_order);
     imported_ = Imported_prediction<DT>();
     DT fresh(dt_.geom_traits());
-    if(!decides_exactly || options_.strategy != Strategy::spanning_tree || !fits_ ||
-       n_ >= std::size_t(no_rank)) {
+    const bool along_tree = options_.strategy == Strategy::spanning_tree || options_.strategy == Strategy::section_3;
+    if(!decides_exactly || !along_tree || !fits_ || n_ >= std::size_t(no_rank)) {
       std::vector<std::uint32_t>().swap(triples_); // not needed: keep the peak memory down
       const std::size_t blocks = decides_exactly ? options_.rebuild_blocks() : 1;
       if(blocks < 2 || !build_in_blocks(fresh, point_at_, n_, stats_, blocks))
@@ -204,7 +207,10 @@ public:
       for(std::size_t t = 0; t < triples_.size(); t += 3)
         ends.insert(ends.end(), {triples_[t], triples_[t + 1], triples_[t + 1], triples_[t + 2]});
       std::vector<std::uint32_t>().swap(triples_);
-      build_along_edges(fresh, point_at_, n_, ends, stats_);
+      if(options_.strategy == Strategy::section_3)
+        build_by_conflict_list_rounds(fresh, point_at_, n_, ends, stats_);
+      else
+        build_along_edges(fresh, point_at_, n_, ends, stats_);
     }
     dt_.swap(fresh);
   }

@@ -69,7 +69,10 @@ struct Pipeline_options
 
   // Whether the prediction is used at all (Strategy::rebuild and Strategy::spanning_tree
   // build from scratch).
-  bool uses_prediction() const { return strategy != Strategy::rebuild && strategy != Strategy::spanning_tree; }
+  bool uses_prediction() const
+  {
+    return strategy != Strategy::rebuild && strategy != Strategy::spanning_tree && strategy != Strategy::section_3;
+  }
   // Whether faces that are not a triangulation (inverted, overlapping, holes) are repaired
   // locally instead of rebuilt.
   bool repairs_locally() const
