@@ -294,28 +294,6 @@ private:
   std::vector<std::uint32_t> head_, next_, face_of_, touched_, moved_; // the buckets
 };
 
-// Writes the flat triangulation of all n stored ranks into `dt` (no vertex): a vertex per
-// representative rank, then on_vertex(index_of(rank), vertex, is_new) for every rank, the
-// representatives first.
-template <class DT, class Gt, class IndexOf, class OnVertex>
-void write_flat_triangulation(DT& dt, const Flat_delaunay<Gt>& flat, std::size_t n, IndexOf index_of,
-                              OnVertex on_vertex)
-{
-  std::vector<typename DT::Vertex_handle> vertex(n);
-  for(std::size_t k = 0; k < n; ++k)
-    if(flat.representative(k) == k) {
-      vertex[k] = dt.tds().create_vertex();
-      vertex[k]->set_point(flat.point(std::uint32_t(k)));
-    }
-  flat.write_faces(dt.tds(), dt.infinite_vertex(), [&](std::uint32_t k) { return vertex[k]; });
-  for(std::size_t k = 0; k < n; ++k) // the new vertices first: a duplicate may have the smaller rank
-    if(flat.representative(k) == k)
-      on_vertex(index_of(k), vertex[k], true);
-  for(std::size_t k = 0; k < n; ++k)
-    if(flat.representative(k) != k)
-      on_vertex(index_of(k), vertex[flat.representative(k)], false);
-}
-
 // Builds DT(points) into the empty `dt` (exact predicates; fewer than no_rank points) from the
 // graph whose edge ends are listed in pairs, by Theorem 3.3's rounds along its spanning
 // forest. `on_round(rounds, conflict_lists)`, if given, sees each round's conflict lists

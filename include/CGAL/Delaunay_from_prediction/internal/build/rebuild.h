@@ -40,10 +40,33 @@ namespace CGAL {
 namespace Delaunay_from_prediction {
 namespace internal {
 
+// Writes the flat triangulation of all n stored ranks into `dt` (no vertex): a vertex per
+// representative rank, then on_vertex(index_of(rank), vertex, is_new) for every rank, the
+// representatives first.
+template <class DT, class Gt, class IndexOf, class OnVertex>
+void write_flat_triangulation(DT& dt, const Flat_delaunay<Gt>& flat, std::size_t n, IndexOf index_of,
+                              OnVertex on_vertex)
+{
+  std::vector<typename DT::Vertex_handle> vertex(n);
+  for(std::size_t k = 0; k < n; ++k)
+    if(flat.representative(k) == k) {
+      vertex[k] = dt.tds().create_vertex();
+      vertex[k]->set_point(flat.point(std::uint32_t(k)));
+    }
+  flat.write_faces(dt.tds(), dt.infinite_vertex(), [&](std::uint32_t k) { return vertex[k]; });
+  for(std::size_t k = 0; k < n; ++k) // the new vertices first: a duplicate may have the smaller rank
+    if(flat.representative(k) == k)
+      on_vertex(index_of(k), vertex[k], true);
+  for(std::size_t k = 0; k < n; ++k)
+    if(flat.representative(k) != k)
+      on_vertex(index_of(k), vertex[flat.representative(k)], false);
+}
+
 // Builds DT(points[indices[0]], points[indices[1]], ...) into `dt`, which holds no vertex, on
 // flat arrays (flat_insertion.h), inserted in the order of `indices`: the vertices are created
 // in that order, the faces written, then `on_vertex(index, vertex, is_new)` is called for
-// each index in that order (`is_new` false for a point equal to an earlier one). Returns
+// each new vertex's index in that order, then for the others (`is_new` false: a point equal
+// to an earlier one). Returns
 // false, with `dt` untouched, when the points span no triangle.
 template <class DT, class PointIterator, class OnVertex>
 bool build_on_flat_arrays(DT& dt, PointIterator points, const std::vector<std::size_t>& indices, OnVertex on_vertex)
@@ -53,15 +76,7 @@ bool build_on_flat_arrays(DT& dt, PointIterator points, const std::vector<std::s
   Flat_delaunay<typename DT::Geom_traits> flat(dt.geom_traits());
   if(!flat.build(n, [&](std::size_t k) -> decltype(points[0]) { return points[indices[k]]; }))
     return false;
-  std::vector<typename DT::Vertex_handle> vertex(n);
-  for(std::size_t k = 0; k < n; ++k)
-    if(flat.representative(k) == k) {
-      vertex[k] = dt.tds().create_vertex();
-      vertex[k]->set_point(points[indices[k]]);
-    }
-  flat.write_faces(dt.tds(), dt.infinite_vertex(), [&](std::uint32_t k) { return vertex[k]; });
-  for(std::size_t k = 0; k < n; ++k)
-    on_vertex(indices[k], vertex[flat.representative(k)], flat.representative(k) == k);
+  write_flat_triangulation(dt, flat, n, [&](std::size_t k) { return indices[k]; }, on_vertex);
   return true;
 }
 
