@@ -36,7 +36,6 @@
 #include <cmath>
 #include <iostream>
 #include <map>
-#include <unordered_set>
 
 using namespace dfp_bench;
 
@@ -53,26 +52,6 @@ struct Row
   double x() const { return double(n); }
   double y() const { return double(D) * std::log2(double(n)); }
 };
-
-// The distinct edges of `faces` that are not edges of `reference`.
-std::size_t wrong_edges(const std::vector<Face>& faces, const DTI& reference)
-{
-  auto key = [](std::uint32_t a, std::uint32_t b) {
-    return (std::uint64_t((std::min)(a, b)) << 32) | (std::max)(a, b);
-  };
-  std::unordered_set<std::uint64_t> delaunay, seen;
-  delaunay.reserve(3 * reference.number_of_vertices());
-  for(auto e = reference.finite_edges_begin(); e != reference.finite_edges_end(); ++e)
-    delaunay.insert(key(e->first->vertex(DTI::ccw(e->second))->info(), e->first->vertex(DTI::cw(e->second))->info()));
-  std::size_t wrong = 0;
-  for(const Face& f : faces)
-    for(int i = 0; i < 3; ++i) {
-      const std::uint64_t k = key(f[i], f[(i + 1) % 3]);
-      if(seen.insert(k).second && delaunay.count(k) == 0)
-        ++wrong;
-    }
-  return wrong;
-}
 
 // Least squares of v = a x + b y (no intercept): returns (a, b).
 template <class Value>
@@ -164,7 +143,7 @@ int main(int argc, char** argv)
     row.part = part;
     row.model = model;
     row.n = n;
-    row.D = wrong_edges(faces, reference);
+    row.D = wrong_edges(edges_of(faces), edges_of(export_faces(reference)));
     std::vector<double> t_cgal, t_s3, t_auto, t_rebuild;
     for(int r = 0; r < reps; ++r) {
       Signature sig;

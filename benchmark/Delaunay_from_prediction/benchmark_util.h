@@ -14,6 +14,7 @@
 #define DFP_BENCHMARK_UTIL_H
 
 #include <CGAL/Delaunay_from_prediction_2.h>
+#include <CGAL/Delaunay_from_prediction/internal/measures/prediction_measures.h>
 #include <CGAL/Delaunay_from_prediction/internal/toolbox/random.h>
 
 #include <CGAL/Delaunay_triangulation_2.h>
@@ -232,6 +233,40 @@ std::vector<F> export_faces(const DTI& t)
     faces.push_back({f->vertex(0)->info(), f->vertex(1)->info(), f->vertex(2)->info()});
   return faces;
 }
+
+// The distinct edges of index triples, each as DFP::internal::edge_key (smaller index first), sorted.
+template <class Faces>
+std::vector<std::uint64_t> edges_of(const Faces& faces)
+{
+  std::vector<std::uint64_t> e;
+  e.reserve(3 * faces.size());
+  for(const auto& f : faces)
+    for(int j = 0; j < 3; ++j)
+      e.push_back(DFP::internal::edge_key(f[j], f[(j + 1) % 3]));
+  std::sort(e.begin(), e.end());
+  e.erase(std::unique(e.begin(), e.end()), e.end());
+  return e;
+}
+
+// D: the number of predicted edges that are not Delaunay edges (both lists from edges_of()).
+inline std::size_t wrong_edges(const std::vector<std::uint64_t>& predicted, const std::vector<std::uint64_t>& delaunay)
+{
+  std::size_t common = 0;
+  auto a = predicted.begin(), b = delaunay.begin();
+  while(a != predicted.end() && b != delaunay.end()) {
+    if(*a < *b)
+      ++a;
+    else if(*b < *a)
+      ++b;
+    else {
+      ++common;
+      ++a;
+      ++b;
+    }
+  }
+  return predicted.size() - common;
+}
+
 
 inline std::vector<DTI::Face_handle> finite_face_handles(DTI& t)
 {

@@ -114,44 +114,6 @@ std::vector<Face> shuffled(const std::vector<Triangle>& in, std::uint64_t seed)
   return faces;
 }
 
-std::uint64_t edge_key(std::size_t a, std::size_t b)
-{
-  if(a > b)
-    std::swap(a, b);
-  return (std::uint64_t(a) << 32) | std::uint64_t(b);
-}
-template <class Faces>
-std::vector<std::uint64_t> edges_of(const Faces& faces)
-{
-  std::vector<std::uint64_t> e;
-  e.reserve(3 * faces.size());
-  for(const auto& f : faces)
-    for(int j = 0; j < 3; ++j)
-      e.push_back(edge_key(f[j], f[(j + 1) % 3]));
-  std::sort(e.begin(), e.end());
-  e.erase(std::unique(e.begin(), e.end()), e.end());
-  return e;
-}
-// D: number of edges of the prediction not in DT(P) (both sorted, distinct).
-std::size_t wrong_edges(const std::vector<std::uint64_t>& predicted,
-                        const std::vector<std::uint64_t>& delaunay)
-{
-  std::size_t common = 0;
-  auto a = predicted.begin(), b = delaunay.begin();
-  while(a != predicted.end() && b != delaunay.end()) {
-    if(*a < *b)
-      ++a;
-    else if(*b < *a)
-      ++b;
-    else {
-      ++common;
-      ++a;
-      ++b;
-    }
-  }
-  return predicted.size() - common;
-}
-
 // ---------------------------------------------------------------------------------------------
 // Checks (the signature of a result is in benchmark_util.h).
 int check_failures = 0;
