@@ -160,7 +160,11 @@ void check_strategy(Mode m, const DFP::Statistics& s, const Expect& e, std::size
     if(e.valid && e.must_repair)
       DFP_CHECK_MSG(!s.fell_back, describe(s));
     DFP_CHECK_MSG(s.faces_carved == 0 && s.holes_refilled == 0, describe(s));
-  } else { // rebuild, spanning_tree (make_delaunay: rebuild)
+  } else if(m == Mode::theorem_4_1 && built_by_theorem_4_1(s)) {
+    // delaunay_from_prediction: Theorem 4.1's own faces, imported with their certificate.
+    DFP_CHECK_MSG(s.insertion_rounds <= 3, describe(s)); // 3, fewer for a handful of points
+    DFP_CHECK_MSG(s.bad_supercells <= s.supercells, describe(s));
+  } else { // rebuild, spanning_tree, section_3 (make_delaunay: rebuild, and theorem_4_1 there)
     DFP_CHECK_MSG(s.fell_back, describe(s));
     DFP_CHECK_MSG(s.points_reinserted == n, describe(s) << ", n = " << n);
     DFP_CHECK_MSG(s.outcome != DFP::Outcome::ok, describe(s));
@@ -359,10 +363,12 @@ void check_dfp_statistics(const DFP::Statistics& s, const Faces& faces,
   for(const Face& f : faces)
     if(CGAL::orientation(points[f[0]], points[f[1]], points[f[2]]) != CGAL::COLLINEAR)
       proper.push_back(f);
-  DFP_CHECK_MSG(s.points_unused >= n - used_indices(faces) &&
-                    s.points_unused <= n - used_indices(proper) + 3 * s.faces_carved,
-                describe(s) << "; " << n - used_indices(faces) << " points in no face, "
-                            << n - used_indices(proper) << " in no proper face");
+  if(!built_by_theorem_4_1(s)) { // otherwise the import's counts are of the faces it computed
+    DFP_CHECK_MSG(s.points_unused >= n - used_indices(faces) &&
+                      s.points_unused <= n - used_indices(proper) + 3 * s.faces_carved,
+                  describe(s) << "; " << n - used_indices(faces) << " points in no face, "
+                              << n - used_indices(proper) << " in no proper face");
+  }
   DFP_CHECK_MSG(s.points_reinserted >= s.points_unused, describe(s));
   if(s.faces_carved == 0)
     DFP_CHECK_MSG(s.points_reinserted == s.points_unused, describe(s));

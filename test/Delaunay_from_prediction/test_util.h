@@ -195,13 +195,14 @@ namespace dfp_test {
 namespace DFP = CGAL::Delaunay_from_prediction;
 
 // The ways the tests call delaunay_from_prediction(): each Strategy, and max_flips(0).
-enum class Mode { defaults, automatic, carve, t_division, regions, flips, rebuild, spanning_tree, section_3, no_flips };
+enum class Mode { defaults, automatic, carve, t_division, regions, flips, rebuild, spanning_tree, section_3, theorem_4_1, no_flips };
 // Every Strategy, and every Strategy and max_flips(0).
-const Mode strategy_modes[] = {Mode::defaults, Mode::automatic, Mode::carve,         Mode::t_division, Mode::regions,
-                               Mode::flips,    Mode::rebuild,   Mode::spanning_tree, Mode::section_3};
-const Mode all_modes[] = {Mode::defaults, Mode::automatic, Mode::carve,         Mode::t_division,
-                          Mode::regions,  Mode::flips,     Mode::rebuild,       Mode::spanning_tree,
-                          Mode::section_3, Mode::no_flips};
+const Mode strategy_modes[] = {Mode::defaults,      Mode::automatic, Mode::carve,       Mode::t_division,
+                               Mode::regions,       Mode::flips,     Mode::rebuild,     Mode::spanning_tree,
+                               Mode::section_3,     Mode::theorem_4_1};
+const Mode all_modes[] = {Mode::defaults,      Mode::automatic, Mode::carve,       Mode::t_division,
+                          Mode::regions,       Mode::flips,     Mode::rebuild,     Mode::spanning_tree,
+                          Mode::section_3,     Mode::theorem_4_1, Mode::no_flips};
 
 inline const char* name_of(Mode m)
 {
@@ -214,6 +215,7 @@ inline const char* name_of(Mode m)
   case Mode::flips: return "flips";
   case Mode::spanning_tree: return "spanning_tree";
   case Mode::section_3: return "section_3";
+  case Mode::theorem_4_1: return "theorem_4_1";
   case Mode::no_flips: return "max_flips(0)";
   default: return "rebuild";
   }
@@ -233,6 +235,7 @@ DFP::Statistics with_mode(Mode m, const F& body, const DFP::Tuning& tuning = DFP
   case Mode::flips: return body(P::strategy(DFP::Strategy::flips));
   case Mode::spanning_tree: return body(P::strategy(DFP::Strategy::spanning_tree));
   case Mode::section_3: return body(P::strategy(DFP::Strategy::section_3));
+  case Mode::theorem_4_1: return body(P::strategy(DFP::Strategy::theorem_4_1));
   case Mode::no_flips: return body(P::max_flips(std::size_t(0)));
   default: return body(P::strategy(DFP::Strategy::rebuild));
   }
@@ -904,6 +907,10 @@ inline bool built_by_prediction_regions(const DFP::Statistics& s, std::size_t n)
   return !s.fell_back && s.regions >= 2 && s.edges_tested == 0 && s.points_reinserted == n && n > 0;
 }
 
+// Whether delaunay_from_prediction() imported the faces Strategy::theorem_4_1 computed (its
+// rounds ran and it did not fall back: the other strategies with rounds fall back).
+inline bool built_by_theorem_4_1(const DFP::Statistics& s) { return !s.fell_back && s.insertion_rounds > 0; }
+
 // Statistics that must hold for any call of delaunay_from_prediction.
 //
 // When the prediction is not a triangulation, the local repair may carve faces (the importer's
@@ -925,7 +932,13 @@ void check_statistics(const DFP::Statistics& s, const Faces& faces,
                                    << n << " points");
   DFP_CHECK_MSG((s.outcome == DFP::Outcome::ok) == !s.fell_back,
                 "reason '" << to_string(s.outcome) << "'");
-  if(s.fell_back || built_by_prediction_regions(s, n)) {
+  if(built_by_theorem_4_1(s)) {
+    // Strategy::theorem_4_1 imported the faces it computed: the import's counts are of those
+    // faces, and the predicted faces kept are at most those that are faces of the result.
+    DFP_CHECK(s.supercells > 0 || s.bad_supercells == 0);
+    DFP_CHECK(s.bad_supercells <= s.supercells);
+    DFP_CHECK(s.faces_certified <= s.faces_in);
+  } else if(s.fell_back || built_by_prediction_regions(s, n)) {
     DFP_CHECK_MSG(s.points_reinserted == n, s.points_reinserted << " vs " << n);
     DFP_CHECK(s.faces_certified == 0);
     if(!s.fell_back)

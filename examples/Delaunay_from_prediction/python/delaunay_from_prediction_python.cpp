@@ -227,6 +227,12 @@ py::dict stats_dict(const DFP::Statistics& s)
   d["conflict_list_entries"] = s.conflict_list_entries;
   d["largest_conflict_list"] = s.largest_conflict_list;
   d["points_relocated"] = s.points_relocated;
+  d["exceptional_cells"] = s.exceptional_cells;
+  d["supercells"] = s.supercells;
+  d["bad_supercells"] = s.bad_supercells;
+  d["walls"] = s.walls;
+  d["chain_edges"] = s.chain_edges;
+  d["cells_computed"] = s.cells_computed;
   d["fallback_reason"] = std::string(DFP::to_string(s.outcome));
   return d;
 }

@@ -157,7 +157,9 @@ struct Statistics
 {
   /// number of predicted faces read (`make_delaunay()`: finite faces before the call).
   std::size_t faces_in = 0;
-  /// number of predicted faces that are faces of the result and were never modified.
+  /// number of predicted faces that are faces of the result and were never modified
+  /// (`Strategy::theorem_4_1`: those its good supercells kept, less any the certificate's
+  /// repair changed).
   std::size_t faces_certified = 0;
   /// number of edge flips performed.
   std::size_t flips = 0;
@@ -223,18 +225,36 @@ struct Statistics
   std::size_t walk_fallbacks = 0;
   /// number of rounds of the gradation (random samples) that inserted the points (BrioDC: the
   /// number of samples; `Strategy::section_3`: the samples \f$R_1, \dots, R_\ell\f$ of
-  /// Theorem 3.3).
+  /// Theorem 3.3; `Strategy::theorem_4_1`: 3, the rounds up to \f$R_3\f$).
   std::size_t insertion_rounds = 0;
-  /// `Strategy::section_3`: the total size of the conflict lists Lemma 3.2 computed, over all
-  /// rounds (for each point outside the round's sample, the number of faces of the sample's
-  /// Delaunay triangulation whose circumcircle holds it).
+  /// `Strategy::section_3` and `Strategy::theorem_4_1`: the total size of the conflict lists
+  /// Lemma 3.2 computed, over all rounds (for each point outside the round's sample, the
+  /// number of faces of the sample's Delaunay triangulation whose circumcircle holds it).
   std::size_t conflict_list_entries = 0;
-  /// `Strategy::section_3`: the longest conflict list of a face, over all rounds.
+  /// `Strategy::section_3` and `Strategy::theorem_4_1`: the longest conflict list of a face,
+  /// over all rounds.
   std::size_t largest_conflict_list = 0;
-  /// `Strategy::section_3`: the number of times a point waiting for its round's insertion was
+  /// `Strategy::section_3` and `Strategy::theorem_4_1`: the number of times a point waiting for its round's insertion was
   /// moved to another face because an insertion changed the face holding it (the work of the
   /// randomized incremental construction with conflict lists).
   std::size_t points_relocated = 0;
+  /// `Strategy::theorem_4_1`: the cells (Voronoi cells of the last sample \f$R_3\f$) whose
+  /// conflict list was longer than the threshold (\f$6 b s_3\f$ with \f$b = s_3\f$) and whose
+  /// triangles were computed first, as the paper's exceptional cells.
+  std::size_t exceptional_cells = 0;
+  /// `Strategy::theorem_4_1`: the supercells (groups of about \f$t = s_3^4\f$ cells).
+  std::size_t supercells = 0;
+  /// `Strategy::theorem_4_1`: the supercells that failed the good test against the
+  /// prediction, whose cells were computed one by one.
+  std::size_t bad_supercells = 0;
+  /// `Strategy::theorem_4_1`: the walls (Voronoi edges of \f$R_3\f$ between two supercells)
+  /// along which a chain of Delaunay edges was traced.
+  std::size_t walls = 0;
+  /// `Strategy::theorem_4_1`: the Delaunay edges found on the walls (the chains' lengths).
+  std::size_t chain_edges = 0;
+  /// `Strategy::theorem_4_1`: the cells whose Delaunay triangles were computed from their
+  /// conflict lists (the exceptional cells and the cells of bad supercells).
+  std::size_t cells_computed = 0;
   /// what the call made of the prediction: `Outcome::ok` when it was used, otherwise why the
   /// call built from scratch (`to_string(outcome)` says it in a sentence).
   Outcome outcome = Outcome::ok;
@@ -263,7 +283,10 @@ inline std::ostream& operator<<(std::ostream& out, const Statistics& s)
       {"edges_in", s.edges_in},                 {"points_located", s.points_located},
       {"faces_visited", s.faces_visited},       {"walk_fallbacks", s.walk_fallbacks},
       {"insertion_rounds", s.insertion_rounds}, {"conflict_list_entries", s.conflict_list_entries},
-      {"largest_conflict_list", s.largest_conflict_list}, {"points_relocated", s.points_relocated}};
+      {"largest_conflict_list", s.largest_conflict_list}, {"points_relocated", s.points_relocated},
+      {"exceptional_cells", s.exceptional_cells}, {"supercells", s.supercells},
+      {"bad_supercells", s.bad_supercells},     {"walls", s.walls},
+      {"chain_edges", s.chain_edges},           {"cells_computed", s.cells_computed}};
   for(const auto& c : counts)
     if(c.second != 0)
       out << c.first << ": " << c.second << "\n";

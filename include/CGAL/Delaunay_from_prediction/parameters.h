@@ -95,7 +95,20 @@ enum class Strategy {
   /// a walk for the \f$O(\log n)\f$ point location, and the incremental construction for
   /// the per-cell lower envelopes. Reported as a fallback, as `spanning_tree` is. For
   /// comparing the theory with the practical strategies; slower than the default.
-  section_3
+  section_3,
+  /// Theorem 4.1 of the paper, with Corollary 4.2 (`delaunay_from_prediction()` only;
+  /// `make_delaunay()` treats it as `rebuild`): Section 3's rounds along a spanning tree of
+  /// the faces' edges, stopped after three rounds (\f$s_1 = n\f$, \f$s_2 = \lfloor \log_2 n
+  /// \rfloor\f$, \f$s_3 = \lfloor \log_2 s_2 \rfloor\f$); the exceptional cells computed at
+  /// once; the cells grouped into supercells of about \f$t = s_3^4\f$ cells; along the walls
+  /// between supercells, chains of Delaunay edges; a supercell whose regions the prediction
+  /// triangulates with locally Delaunay faces keeps them, the others are computed cell by
+  /// cell. The faces are then imported with the package's certificate, which repairs what a
+  /// degenerate input (points on a Voronoi edge of the sample) left wrong. Substitutions,
+  /// named in the manual: the cells are the sample's Voronoi cells, the supercells grown
+  /// breadth-first, the chains traced crossing by crossing. For comparing the theory with the
+  /// practical strategies; slower than the default.
+  theorem_4_1
 };
 
 /*!

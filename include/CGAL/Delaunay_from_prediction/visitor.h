@@ -50,7 +50,11 @@ enum class Stage {
   insert,
   /// the build from scratch: a fallback, `Strategy::rebuild` or `Strategy::spanning_tree`
   /// (with `CGAL::Parallel_tag`, in spatial blocks on TBB's threads).
-  rebuild
+  rebuild,
+  /// `Strategy::theorem_4_1`: Theorem 4.1's computation of the faces (the rounds, the cells,
+  /// the supercells, their walls and good test, the cells of the bad supercells), before the
+  /// import certifies them.
+  supercells
 };
 
 /*!
@@ -62,7 +66,8 @@ The name of a stage, as it is spelled in `Stage` (for example `"t_division"`).
 inline const char* to_string(Stage stage)
 {
   constexpr const char* names[] = {"check", "screen",     "order",   "import", "certify", "untangle",
-                                   "carve", "t_division", "regions", "flips",  "insert",  "rebuild"};
+                                   "carve", "t_division", "regions", "flips",  "insert",  "rebuild",
+                                   "supercells"};
   return names[static_cast<int>(stage)];
 }
 

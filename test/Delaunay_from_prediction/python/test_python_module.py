@@ -115,6 +115,7 @@ def test_stats_dict():
                 "faces_carved", "holes_refilled", "carve_rounds", "regions", "bad_regions",
                 "boundary_vertices", "edges_in", "points_located", "faces_visited", "walk_fallbacks",
                 "insertion_rounds", "conflict_list_entries", "largest_conflict_list", "points_relocated",
+                "exceptional_cells", "supercells", "bad_supercells", "walls", "chain_edges", "cells_computed",
                 "fallback_reason"}
     assert set(stats) == expected
     assert isinstance(stats["fallback_reason"], str) and stats["fallback_reason"] == ""

@@ -294,6 +294,34 @@ private:
   std::vector<std::uint32_t> head_, next_, face_of_, touched_, moved_; // the buckets
 };
 
+// Theorem 3.3's rounds up to sample `last`: DT(R_1), grown along the sample's order until
+// it spans a triangle (the bounding triangle's part), then DT(R_2), ..., DT(R_last), each
+// from the previous one's conflict lists; `on_round(rounds, conflict_lists)` sees each
+// round's lists before the next triangulation is built. Returns the number of points of
+// samples.order inserted, 0 when they are all on one line (no round can start).
+template <class Gt, class OnRound>
+std::size_t run_conflict_list_rounds(Conflict_list_rounds<Gt>& rounds, const Nested_samples& samples, std::size_t last,
+                                     OnRound on_round)
+{
+  const std::size_t n = samples.order.size();
+  std::size_t inserted = (std::min)(n, (std::max)(samples.end[0], std::size_t(3)));
+  while(!rounds.start(samples.order, inserted)) {
+    if(inserted == n)
+      return 0;
+    inserted = (std::min)(n, 2 * inserted);
+  }
+  for(std::size_t i = 1; i <= last; ++i) {
+    if(samples.end[i] <= inserted)
+      continue;
+    rounds.locate_along_tree();
+    const Conflict_lists lists = rounds.conflict_lists();
+    on_round(rounds, lists);
+    rounds.insert(samples.order, inserted, samples.end[i]);
+    inserted = samples.end[i];
+  }
+  return inserted;
+}
+
 // Builds DT(points) into the empty `dt` (exact predicates; fewer than no_rank points) from the
 // graph whose edge ends are listed in pairs, by Theorem 3.3's rounds along its spanning
 // forest. `on_round(rounds, conflict_lists)`, if given, sees each round's conflict lists
@@ -314,27 +342,17 @@ void build_by_conflict_list_rounds(DT& dt, PointIterator points, std::size_t n, 
   Conflict_list_rounds<Gt> rounds(dt.geom_traits(), forest,
                                   [&](std::size_t r) -> decltype(points[0]) { return points[forest.order[r]]; },
                                   stats);
-  // R_1, grown along the sample's order until it spans a triangle.
-  std::size_t inserted = (std::min)(n, (std::max)(samples.end[0], std::size_t(3)));
-  while(!rounds.start(samples.order, inserted)) {
-    if(inserted == n) { // collinear points: no rounds
-      std::vector<std::size_t> indices(n);
-      for(std::size_t i = 0; i < n; ++i)
-        indices[i] = i;
-      insert_points(dt, points, indices, stats);
-      return;
-    }
-    inserted = (std::min)(n, 2 * inserted);
-  }
-  for(std::size_t i = 1; i < samples.end.size(); ++i) {
-    if(samples.end[i] <= inserted)
-      continue;
-    rounds.locate_along_tree();
-    const Conflict_lists lists = rounds.conflict_lists();
-    if constexpr(!std::is_same<OnRound, std::nullptr_t>::value)
-      on_round(rounds, lists);
-    rounds.insert(samples.order, inserted, samples.end[i]);
-    inserted = samples.end[i];
+  const std::size_t inserted =
+      run_conflict_list_rounds(rounds, samples, samples.end.size() - 1, [&](const auto& r, const Conflict_lists& lists) {
+        if constexpr(!std::is_same<OnRound, std::nullptr_t>::value)
+          on_round(r, lists);
+      });
+  if(inserted == 0) { // collinear points: no rounds
+    std::vector<std::size_t> indices(n);
+    for(std::size_t i = 0; i < n; ++i)
+      indices[i] = i;
+    insert_points(dt, points, indices, stats);
+    return;
   }
   write_flat_triangulation(dt, rounds.flat(), n, [&](std::size_t r) { return std::size_t(forest.order[r]); },
                            on_vertex);

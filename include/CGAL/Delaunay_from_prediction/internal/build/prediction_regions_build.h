@@ -46,6 +46,7 @@
 #include <CGAL/Delaunay_from_prediction/Statistics.h>
 #include <CGAL/Delaunay_from_prediction/internal/toolbox/dense_index.h>
 #include <CGAL/Delaunay_from_prediction/internal/toolbox/grid.h>
+#include <CGAL/Delaunay_from_prediction/internal/toolbox/region_growing.h>
 #include <CGAL/Delaunay_from_prediction/internal/build/block_parallel_build.h>
 
 #include <algorithm>
@@ -71,7 +72,6 @@ inline std::size_t default_prediction_region_size(std::size_t n, std::size_t thr
 // Grows the regions (see the file's comment) over the faces `triples` (three indices a face,
 // each below n), of about `share` points each. region_of[i] is the region of point i, or
 // no_region for a point in no face. Returns the number of regions.
-constexpr std::uint32_t no_region = std::uint32_t(-1);
 inline std::size_t grow_prediction_regions(std::size_t n, const std::vector<std::uint32_t>& triples,
                                            std::size_t share, std::vector<std::uint32_t>& region_of)
 {

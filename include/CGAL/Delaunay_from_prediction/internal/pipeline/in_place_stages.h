@@ -67,8 +67,13 @@ public:
 
   Outcome reason_not_to_use_prediction() const
   {
-    return options_.uses_prediction() ? Outcome::ok : Outcome::rebuild_requested;
+    // Theorem 4.1 needs faces to take a spanning tree from: make_delaunay() rebuilds.
+    return options_.uses_prediction() && options_.strategy != Strategy::theorem_4_1 ? Outcome::ok
+                                                                                      : Outcome::rebuild_requested;
   }
+
+  // Theorem 4.1 runs on index triples only (reason_not_to_use_prediction() rules it out here).
+  Outcome compute_by_supercells() { return Outcome::rebuild_requested; }
 
   bool can_build_by_regions() const
   {

@@ -16,6 +16,7 @@
 #include <CGAL/Delaunay_from_prediction/internal/build/rebuild.h>
 #include <CGAL/Delaunay_from_prediction/internal/build/conflict_list_rounds.h>
 #include <CGAL/Delaunay_from_prediction/internal/build/spanning_tree_insertion.h>
+#include <CGAL/Delaunay_from_prediction/internal/build/supercells.h>
 #include <CGAL/Delaunay_from_prediction/internal/check/input_check.h>
 #include <CGAL/Delaunay_from_prediction/internal/check/prediction_screens.h>
 #include <CGAL/Delaunay_from_prediction/internal/import/import_prediction.h>
@@ -92,6 +93,21 @@ public:
     if(why == Outcome::ok)
       dt_.swap(result_);
     return why;
+  }
+
+  // Theorem 4.1 (supercells.h): the prediction's faces replaced by the ones it computes, which
+  // the import then certifies (the faces are kept when the points span no triangle).
+  Outcome compute_by_supercells()
+  {
+    std::vector<std::uint32_t> computed;
+    std::size_t kept = 0;
+    if(n_ < std::size_t(no_rank) &&
+       delaunay_faces_by_supercells(dt_.geom_traits(), point_at_, n_, triples_, computed, kept, stats_)) {
+      triples_.swap(computed);
+      number_of_faces_ = triples_.size() / 3;
+      predicted_faces_kept_ = kept;
+    }
+    return Outcome::ok;
   }
 
   // The screens that reject the prediction before its import: Outcome::ok when none does.
@@ -179,6 +195,14 @@ public:
                                    modified_, touched_, 0, [&](const void* f) { return !made_by_repair(f); });
     else
       stats_.faces_certified = count_faces_kept();
+    if(predicted_faces_kept_ != none_kept) {
+      // Theorem 4.1 imported its own faces: the predicted ones among them are those its good
+      // supercells kept, less any face the certificate's repair changed.
+      const std::size_t changed = number_of_faces_ - (std::min)(number_of_faces_, stats_.faces_certified);
+      // Never more than the faces read, should two supercells keep the same face.
+      stats_.faces_certified =
+          (std::min)(stats_.faces_in, predicted_faces_kept_ - (std::min)(predicted_faces_kept_, changed));
+    }
     dt_.swap(result_);
   }
 
@@ -318,6 +342,8 @@ private:
   std::vector<const void*> modified_;   // predicted faces changed by a repair
   std::vector<Face_handle> touched_;    // faces flipped
   std::vector<const void*> new_vertices_; // the unused points inserted
+  static constexpr std::size_t none_kept = std::size_t(-1);
+  std::size_t predicted_faces_kept_ = none_kept; // Theorem 4.1's good faces, when it ran
 };
 
 } // namespace internal

@@ -77,7 +77,8 @@ struct Pipeline_options
   // locally instead of rebuilt.
   bool repairs_locally() const
   {
-    return strategy == Strategy::automatic || strategy == Strategy::carve || strategy == Strategy::t_division;
+    return strategy == Strategy::automatic || strategy == Strategy::carve || strategy == Strategy::t_division ||
+           strategy == Strategy::theorem_4_1;
   }
   // A budget the caller set is a hard limit: more failing edges than flips rebuild at once.
   // The default one is an estimate, and so is the limit (max_failing_edges()).
@@ -161,6 +162,10 @@ Outcome use_prediction(Stages& stages, const Pipeline_options& options, const St
   if(why == Outcome::ok && options.strategy == Strategy::regions && stages.can_build_by_regions()) {
     // Theorem 5.4 in practical form (prediction_regions_build.h): a build, not a repair.
     return run(Stage::regions, [&] { return stages.build_by_regions(); });
+  }
+  if(why == Outcome::ok && options.strategy == Strategy::theorem_4_1) {
+    // Theorem 4.1 (supercells.h) computes the faces, which the stages below certify.
+    why = run(Stage::supercells, [&] { return stages.compute_by_supercells(); });
   }
   if(why == Outcome::ok)
     why = run(Stage::screen, [&] { return stages.screen(); });

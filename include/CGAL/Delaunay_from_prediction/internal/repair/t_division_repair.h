@@ -45,7 +45,7 @@
 #include <CGAL/Delaunay_from_prediction/internal/toolbox/hash_map.h>
 #include <CGAL/Delaunay_from_prediction/internal/build/insertion.h>
 #include <CGAL/Delaunay_from_prediction/internal/toolbox/predicates.h>
-#include <CGAL/Delaunay_from_prediction/internal/toolbox/union_find.h>
+#include <CGAL/Delaunay_from_prediction/internal/toolbox/region_growing.h>
 
 #include <CGAL/Delaunay_triangulation_2.h>
 #include <CGAL/Triangulation_data_structure_2.h>
@@ -252,17 +252,15 @@ public:
 
 private:
   static constexpr std::uint32_t none = std::uint32_t(-1);
-  static constexpr std::uint32_t outside = std::uint32_t(-2); // the region of infinite faces
+  static constexpr std::uint32_t outside = outside_regions; // the region of infinite faces
   using Dt_vertex_base = Triangulation_vertex_base_with_info_2<std::uint32_t, Gt>;
   using Dt = Delaunay_triangulation_2<Gt, Triangulation_data_structure_2<Dt_vertex_base>>;
   using Dt_vertex = typename Dt::Vertex_handle;
   using Dt_face = typename Dt::Face_handle;
   using Dt_index = Dense_index<typename Dt::Triangulation_data_structure::Face_range>;
 
-  // Breadth-first region growing in the dual graph of the finite faces, seeds in container
-  // order; each region stops at `t` faces. Regions boxed in by others come out small: those
-  // under t/4 faces join a neighbouring region (union-find), since every face of a small
-  // region is likely in B. Infinite faces belong to no region. The neighbours' dense indices
+  // The finite faces divided into regions connected in the dual graph (grow_regions(), seeds
+  // in container order); infinite faces belong to no region. The neighbours' dense indices
   // are kept for plan().
   void divide(std::size_t t)
   {
@@ -274,53 +272,17 @@ private:
     for(std::size_t k = 0; k < F; ++k)
       for(int i = 0; i < 3; ++i)
         neighbor_[3 * k + i] = std::uint32_t(face_index_.of(faces_[k]->neighbor(i)));
-    region_.assign(F, none);
+    region_.assign(F, no_region);
     {
       auto h = tds_.incident_faces(infinite_), end = h;
       do
         region_[face_index_.of(h)] = outside;
       while(++h != end);
     }
-    std::vector<std::uint32_t> queue, size;
-    for(std::size_t s = 0; s < F; ++s) {
-      if(region_[s] != none)
-        continue;
-      const std::uint32_t r = std::uint32_t(size.size());
-      region_[s] = r;
-      queue.assign(1, std::uint32_t(s));
-      for(std::size_t head = 0; head < queue.size() && queue.size() < t; ++head)
-        for(int i = 0; i < 3 && queue.size() < t; ++i) {
-          const std::uint32_t g = neighbor_[3 * queue[head] + i];
-          if(region_[g] == none) {
-            region_[g] = r;
-            queue.push_back(g);
-          }
-        }
-      size.push_back(std::uint32_t(queue.size()));
-    }
-    // Small regions join a neighbour.
-    Union_find regions_joined(size.size());
-    auto find = [&](std::uint32_t r) { return std::uint32_t(regions_joined.find(r)); };
-    for(std::size_t k = 0; k < F; ++k) {
-      const std::uint32_t r = region_[k];
-      if(r == outside || 4 * size[r] >= t || find(r) != r)
-        continue;
-      for(int i = 0; i < 3; ++i) {
-        const std::uint32_t q = region_[neighbor_[3 * k + i]];
-        if(q != outside && find(q) != r) {
-          regions_joined.join(r, q);
-          break;
-        }
-      }
-    }
-    std::uint32_t regions = 0;
-    std::vector<std::uint32_t> label(size.size(), none);
-    for(std::uint32_t r = 0; r < size.size(); ++r)
-      if(find(r) == r)
-        label[r] = regions++;
-    for(std::size_t k = 0; k < F; ++k)
-      if(region_[k] != outside)
-        region_[k] = label[find(region_[k])];
+    const std::uint32_t regions = grow_regions(region_, t, [&](std::uint32_t k, auto&& f) {
+      for(int i = 0; i < 3; ++i)
+        f(neighbor_[3 * k + i]);
+    });
     bad_region_.assign(regions, 0);
   }
 
