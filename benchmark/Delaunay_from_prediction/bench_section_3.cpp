@@ -2,10 +2,10 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Author(s): Delaunay_from_prediction founding team
 //
-// Benchmark of Section 3 of the paper as written (Strategy::section_3): how its time and its
-// counted work grow with the prediction's error D and with n, against n + D log2 n, next to
-// the default strategy, the package's build from scratch (Strategy::rebuild) and CGAL's, on
-// the same inputs.
+// Benchmark of Section 3 and Theorem 4.1 of the paper as written (Strategy::section_3,
+// Strategy::theorem_4_1): how their time (and Section 3's counted work) grow with the
+// prediction's error D and with n, against n + D log2 n, next to the default strategy, the
+// package's build from scratch (Strategy::rebuild) and CGAL's, on the same inputs.
 //
 // Rows (uniform points in the unit square):
 //   part D: at each n of --n, predictions with growing D:
@@ -17,15 +17,16 @@
 //                ones Lemma 3.2 charges log n each (self-crossing faces, Corollary 3.5);
 //   part n: at each n of --growth, D = 0 (flips 0) and D ~ n/100 (flips n/100).
 // D is counted exactly: the distinct predicted edges that are not edges of DT(P).
-// Columns: D; the seconds of CGAL's range insert, of section_3, of the default strategy and of
-// Strategy::rebuild (the package's build from scratch, the prediction unused), medians of
-// --reps repetitions in which the four calls alternate; CGAL / section_3; section_3's counters
-// (faces visited by its walks, conflict-list entries over all rounds, points relocated by the
-// incremental construction, walks past their cap); then the fit.
+// Columns: D; the seconds of CGAL's range insert, of section_3, of theorem_4_1, of the default
+// strategy and of Strategy::rebuild (the package's build from scratch, the prediction
+// unused), medians of --reps repetitions in which the five calls alternate; CGAL / section_3
+// and CGAL / theorem_4_1; section_3's counters (faces visited by its walks, conflict-list
+// entries over all rounds, points relocated by the incremental construction, walks past their
+// cap); theorem_4_1's supercells, bad supercells and cells computed; then the fits.
 // The fits: least squares against a * n + b * D * log2(n) of the counted work (the sum of the
-// three counters) over all rows, and of the seconds over the rows of each n; each row then shows
-// measured / fitted, which stays near 1 where the model n + D log n describes the growth, and
-// the seconds per point and per unit of work.
+// three counters) over all rows, and of each strategy's seconds over the rows of each n; each
+// row then shows measured / fitted, which stays near 1 where the model n + D log n describes
+// the growth, and the seconds per point and per unit of work.
 // Every result is checked against CGAL's (face set signature); the exit status says whether all
 // were equal.
 
@@ -45,8 +46,9 @@ struct Row
 {
   std::string part, model;
   std::size_t n = 0, D = 0;
-  double cgal = 0, section_3 = 0, automatic = 0, rebuild = 0;
+  double cgal = 0, section_3 = 0, theorem_4_1 = 0, automatic = 0, rebuild = 0;
   std::size_t faces_visited = 0, conflict_entries = 0, relocated = 0, capped = 0;
+  std::size_t supercells = 0, bad_supercells = 0, cells_computed = 0;
   bool same = true;
   double work() const { return double(faces_visited + conflict_entries + relocated); }
   double x() const { return double(n); }
@@ -144,7 +146,7 @@ int main(int argc, char** argv)
     row.model = model;
     row.n = n;
     row.D = wrong_edges(edges_of(faces), edges_of(export_faces(reference)));
-    std::vector<double> t_cgal, t_s3, t_auto, t_rebuild;
+    std::vector<double> t_cgal, t_s3, t_t41, t_auto, t_rebuild;
     for(int r = 0; r < reps; ++r) {
       Signature sig;
       DFP::Statistics stats;
@@ -158,6 +160,12 @@ int main(int argc, char** argv)
       row.conflict_entries = stats.conflict_list_entries;
       row.relocated = stats.points_relocated;
       row.capped = stats.walk_fallbacks;
+      t_t41.push_back(time_prediction(points, faces, stats, sig,
+                                      DFP::parameters::strategy(DFP::Strategy::theorem_4_1)));
+      row.same = row.same && sig == cgal_sig && !stats.fell_back;
+      row.supercells = stats.supercells;
+      row.bad_supercells = stats.bad_supercells;
+      row.cells_computed = stats.cells_computed;
       t_auto.push_back(time_prediction(points, faces, stats, sig));
       row.same = row.same && sig == cgal_sig;
       t_rebuild.push_back(time_prediction(points, faces, stats, sig, DFP::parameters::strategy(DFP::Strategy::rebuild)));
@@ -165,19 +173,22 @@ int main(int argc, char** argv)
     }
     row.cgal = median(t_cgal);
     row.section_3 = median(t_s3);
+    row.theorem_4_1 = median(t_t41);
     row.automatic = median(t_auto);
     row.rebuild = median(t_rebuild);
     all_same = all_same && row.same;
-    std::printf("%-6s %-8zu %-11s %8zu | %7.3f %7.3f %7.3f %7.3f | %5.2f | %10zu %10zu %10zu %6zu | %s\n",
-                part.c_str(), n, model.c_str(), row.D, row.cgal, row.section_3, row.automatic, row.rebuild,
-                row.cgal / row.section_3, row.faces_visited, row.conflict_entries, row.relocated, row.capped,
-                row.same ? "same as CGAL" : "DIFFERENT");
+    std::printf("%-6s %-8zu %-11s %8zu | %7.3f %7.3f %7.3f %7.3f %7.3f | %5.2f %5.2f | %10zu %10zu %10zu %6zu | "
+                "%5zu %5zu %7zu | %s\n",
+                part.c_str(), n, model.c_str(), row.D, row.cgal, row.section_3, row.theorem_4_1, row.automatic,
+                row.rebuild, row.cgal / row.section_3, row.cgal / row.theorem_4_1, row.faces_visited,
+                row.conflict_entries, row.relocated, row.capped, row.supercells, row.bad_supercells,
+                row.cells_computed, row.same ? "same as CGAL" : "DIFFERENT");
     std::fflush(stdout);
     rows.push_back(row);
   };
-  std::printf("%-6s %-8s %-11s %8s | %7s %7s %7s %7s | %5s | %10s %10s %10s %6s | %s\n", "part", "n", "prediction",
-              "D", "CGAL s", "sec3 s", "auto s", "rebld s", "C/s3", "walk faces", "conflicts", "relocated", "capped",
-              "check");
+  std::printf("%-6s %-8s %-11s %8s | %7s %7s %7s %7s %7s | %5s %5s | %10s %10s %10s %6s | %5s %5s %7s | %s\n",
+              "part", "n", "prediction", "D", "CGAL s", "sec3 s", "t4.1 s", "auto s", "rebld s", "C/s3", "C/t41",
+              "walk faces", "conflicts", "relocated", "capped", "super", "bad", "cells", "check");
   for(const std::string& size : sizes) {
     const std::size_t n = std::size_t(std::atof(size.c_str()));
     for(const char* model : {"flips 0", "flips n/1000", "flips n/100", "flips n/10", "flips n/3", "rho 0.9", "rho 0.5",
@@ -196,36 +207,42 @@ int main(int argc, char** argv)
   // a unit of work grows with n (the rounds visit the points in random order: cache misses).
   const auto work_fit = fit(rows, [](const Row& r) { return r.work(); });
   std::printf("# fit over all rows: counted work = %.3g * n + %.3g * D log2 n\n", work_fit.first, work_fit.second);
-  std::map<std::size_t, std::pair<double, double>> time_fits;
+  std::map<std::size_t, std::pair<double, double>> time_fits, t41_fits;
   for(const Row& r : rows)
     if(time_fits.count(r.n) == 0) {
       std::vector<Row> same_n;
       std::copy_if(rows.begin(), rows.end(), std::back_inserter(same_n), [&](const Row& o) { return o.n == r.n; });
       time_fits[r.n] = fit(same_n, [](const Row& o) { return o.section_3; });
-      std::printf("# fit at n = %zu: section_3 seconds = %.3g * n + %.3g * D log2 n\n", r.n, time_fits[r.n].first,
-                  time_fits[r.n].second);
+      t41_fits[r.n] = fit(same_n, [](const Row& o) { return o.theorem_4_1; });
+      std::printf("# fit at n = %zu: section_3 seconds = %.3g * n + %.3g * D log2 n; theorem_4_1 seconds = %.3g * n + "
+                  "%.3g * D log2 n\n",
+                  r.n, time_fits[r.n].first, time_fits[r.n].second, t41_fits[r.n].first, t41_fits[r.n].second);
     }
-  std::printf("%-8s %-11s %8s | %8s %8s | %9s %9s %9s\n", "n", "prediction", "D", "s/fit", "work/fit", "ns/point",
-              "ns/work", "D log n/n");
+  std::printf("%-8s %-11s %8s | %8s %8s %8s | %9s %9s %9s\n", "n", "prediction", "D", "s3/fit", "work/fit",
+              "t41/fit", "ns/point", "ns/work", "D log n/n");
   std::FILE* csv = csv_file.empty() ? nullptr : std::fopen(csv_file.c_str(), "w");
   if(csv != nullptr)
-    std::fprintf(csv, "part,n,prediction,D,cgal_s,section_3_s,automatic_s,rebuild_s,cgal_over_section_3,"
-                      "walk_faces,conflict_list_entries,points_relocated,walks_capped,time_over_fit,work_over_fit,"
+    std::fprintf(csv, "part,n,prediction,D,cgal_s,section_3_s,theorem_4_1_s,automatic_s,rebuild_s,cgal_over_section_3,"
+                      "cgal_over_theorem_4_1,walk_faces,conflict_list_entries,points_relocated,walks_capped,supercells,"
+                      "bad_supercells,cells_computed,time_over_fit,work_over_fit,theorem_4_1_time_over_fit,"
                       "same_as_cgal\n");
   for(const Row& r : rows) {
     const double t_fit = time_fits[r.n].first * r.x() + time_fits[r.n].second * r.y();
     const double w_fit = work_fit.first * r.x() + work_fit.second * r.y();
-    std::printf("%-8zu %-11s %8zu | %8.2f %8.2f | %9.0f %9.1f %9.3f\n", r.n, r.model.c_str(), r.D, r.section_3 / t_fit,
-                r.work() / w_fit, 1e9 * r.section_3 / double(r.n), 1e9 * r.section_3 / r.work(), r.y() / r.x());
+    const double t41_fit = t41_fits[r.n].first * r.x() + t41_fits[r.n].second * r.y();
+    std::printf("%-8zu %-11s %8zu | %8.2f %8.2f %8.2f | %9.0f %9.1f %9.3f\n", r.n, r.model.c_str(), r.D,
+                r.section_3 / t_fit, r.work() / w_fit, r.theorem_4_1 / t41_fit, 1e9 * r.section_3 / double(r.n),
+                1e9 * r.section_3 / r.work(), r.y() / r.x());
     if(csv != nullptr)
-      std::fprintf(csv, "%s,%zu,%s,%zu,%.4f,%.4f,%.4f,%.4f,%.3f,%zu,%zu,%zu,%zu,%.3f,%.3f,%d\n", r.part.c_str(), r.n,
-                   r.model.c_str(), r.D, r.cgal, r.section_3, r.automatic, r.rebuild, r.cgal / r.section_3,
-                   r.faces_visited, r.conflict_entries, r.relocated, r.capped, r.section_3 / t_fit, r.work() / w_fit,
-                   int(r.same));
+      std::fprintf(csv, "%s,%zu,%s,%zu,%.4f,%.4f,%.4f,%.4f,%.4f,%.3f,%.3f,%zu,%zu,%zu,%zu,%zu,%zu,%zu,%.3f,%.3f,%.3f,%d\n",
+                   r.part.c_str(), r.n, r.model.c_str(), r.D, r.cgal, r.section_3, r.theorem_4_1, r.automatic,
+                   r.rebuild, r.cgal / r.section_3, r.cgal / r.theorem_4_1, r.faces_visited, r.conflict_entries,
+                   r.relocated, r.capped, r.supercells, r.bad_supercells, r.cells_computed, r.section_3 / t_fit,
+                   r.work() / w_fit, r.theorem_4_1 / t41_fit, int(r.same));
   }
   if(csv != nullptr)
     std::fclose(csv);
-  std::printf("# C/s3 = CGAL / section_3; s/fit and work/fit = measured / fitted; ns/point and ns/work = section_3's "
-              "time per point and per unit of counted work\n");
+  std::printf("# C/s3 = CGAL / section_3, C/t41 = CGAL / theorem_4_1; s3/fit, work/fit and t41/fit = measured / "
+              "fitted; ns/point and ns/work = section_3's time per point and per unit of counted work\n");
   return all_same ? 0 : 1;
 }
