@@ -415,7 +415,7 @@ static Case gen_case(unsigned long long seed, long long k)
       }
     }
     if(rng.get_int(0, 3) == 0)
-      c.strategy = rng.get_int(0, 9); // every Strategy
+      c.strategy = rng.get_int(0, 10); // every Strategy
     if(rng.get_int(0, 8) == 0)
       c.max_flips = rng.get_bool() ? 0 : rng.get_int(1, 6);
     if(rng.get_int(0, 6) == 0)
@@ -477,7 +477,7 @@ static Case gen_case(unsigned long long seed, long long k)
           c.pred_family = F_MD_ONTO; // could not keep them apart: then it must throw
     }
     if(rng.get_int(0, 3) == 0)
-      c.strategy = rng.get_int(0, 9); // every Strategy
+      c.strategy = rng.get_int(0, 10); // every Strategy
     if(rng.get_int(0, 8) == 0)
       c.max_flips = rng.get_bool() ? 0 : rng.get_int(1, 6);
     break;

@@ -164,7 +164,12 @@ void check_strategy(Mode m, const DFP::Statistics& s, const Expect& e, std::size
     // delaunay_from_prediction: Theorem 4.1's own faces, imported with their certificate.
     DFP_CHECK_MSG(s.insertion_rounds <= 3, describe(s)); // 3, fewer for a handful of points
     DFP_CHECK_MSG(s.bad_supercells <= s.supercells, describe(s));
-  } else { // rebuild, spanning_tree, section_3 (make_delaunay: rebuild, and theorem_4_1 there)
+  } else if(m == Mode::theorem_5_4 && s.outcome != DFP::Outcome::rebuild_requested) {
+    // delaunay_from_prediction: Theorem 5.4's completion G', repaired by the stages, which may
+    // give it up as they give up any prediction (after carving part of it).
+    DFP_CHECK_MSG(s.d_cross_guesses >= 1 || s.fell_back, describe(s));
+    DFP_CHECK_MSG(!s.fell_back || s.faces_certified == 0, describe(s));
+  } else { // rebuild, spanning_tree, section_3 (make_delaunay: rebuild, and theorems 4.1 and 5.4 there)
     DFP_CHECK_MSG(s.fell_back, describe(s));
     DFP_CHECK_MSG(s.points_reinserted == n, describe(s) << ", n = " << n);
     DFP_CHECK_MSG(s.outcome != DFP::Outcome::ok, describe(s));
@@ -363,7 +368,7 @@ void check_dfp_statistics(const DFP::Statistics& s, const Faces& faces,
   for(const Face& f : faces)
     if(CGAL::orientation(points[f[0]], points[f[1]], points[f[2]]) != CGAL::COLLINEAR)
       proper.push_back(f);
-  if(!built_by_theorem_4_1(s)) { // otherwise the import's counts are of the faces it computed
+  if(!built_by_theorem_4_1(s) && !built_by_theorem_5_4(s)) { // otherwise the import's counts are of the faces it computed
     DFP_CHECK_MSG(s.points_unused >= n - used_indices(faces) &&
                       s.points_unused <= n - used_indices(proper) + 3 * s.faces_carved,
                   describe(s) << "; " << n - used_indices(faces) << " points in no face, "

@@ -325,6 +325,24 @@ struct Models_test
     }
   }
 
+  // --- Order-k Delaunay triangulations ------------------------------------------------------
+
+  void order_k(const Points& points, bool general_position)
+  {
+    DFP_CHECK(is_delaunay(points, DFP::order_k_prediction(points, 0, 3)));
+    std::uint64_t seed = 950;
+    for(std::size_t k : {1, 2, 5, 20}) {
+      Scope s("k = ", k);
+      const Faces faces = DFP::order_k_prediction(points, k, seed++);
+      const Measures m = DFP::prediction_measures(points, faces);
+      DFP_CHECK_MSG(m.is_triangulation && m.d_vio <= k, describe(m));
+      if(general_position) // m draws: many flips pass the test
+        DFP_CHECK_MSG(m.D > 0 && (k < 5 || m.d_vio > 1), describe(m));
+    }
+    // With k past n every convex flip passes: the random-flip model with rho = 0, draw for draw.
+    DFP_CHECK(DFP::order_k_prediction(points, points.size(), 77) == DFP::random_flip_prediction(points, 0.0, 77));
+  }
+
   // --- Moved points -------------------------------------------------------------------------
 
   void moved_points(const Points& points)
@@ -616,6 +634,7 @@ struct Models_test
       DFP_RUN(triangulations(points));
       DFP_RUN(rho_model(points, false));
       DFP_RUN(k_flips(points));
+      DFP_RUN(order_k(points, std::string(name) == "uniform" || std::string(name) == "clustered"));
       DFP_RUN(moved_points(points));
       DFP_RUN(holes(points));
       DFP_RUN(self_crossing(points));

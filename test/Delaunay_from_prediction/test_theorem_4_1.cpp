@@ -87,16 +87,7 @@ void general_position()
     }
     {
       Scope c("points relabelled among themselves: long wrong edges, crossing faces");
-      std::vector<std::size_t> chosen;
-      for(std::size_t i = 0; i < n; ++i)
-        if(rng.get_int(0, 50) == 0)
-          chosen.push_back(i);
-      const std::vector<std::size_t> label = permuted_among(n, chosen, rng);
-      Faces relabelled = exact;
-      for(Face& f : relabelled)
-        for(auto& v : f)
-          v = label[v];
-      check_computed_exactly(run_theorem_4_1<K>(points, relabelled));
+      check_computed_exactly(run_theorem_4_1<K>(points, with_points_relabelled(exact, n, 50, rng)));
     }
     {
       Scope c("a PSLG with missing faces (Corollary 4.2)");
@@ -115,11 +106,7 @@ void degenerate_points()
 {
   CGAL::Random rng(4102);
   using K = CGAL::Epick;
-  const std::pair<const char*, XYs> families[] = {{"grid", grid_points(40, 40, rng)},
-                                                  {"lattice circle", lattice_circle_points(30, rng, 10)},
-                                                  {"duplicates", with_duplicates(uniform_points(3000, rng), 300, rng)},
-                                                  {"collinear", collinear_points(200, rng)}};
-  for(const auto& family : families) {
+  for(const auto& family : small_degenerate_families(rng)) {
     Scope c(family.first);
     const auto points = to_points<K>(family.second);
     run_theorem_4_1<K>(points, faces_by_info(indexed_delaunay<K>(points)));

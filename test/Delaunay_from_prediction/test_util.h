@@ -195,14 +195,16 @@ namespace dfp_test {
 namespace DFP = CGAL::Delaunay_from_prediction;
 
 // The ways the tests call delaunay_from_prediction(): each Strategy, and max_flips(0).
-enum class Mode { defaults, automatic, carve, t_division, regions, flips, rebuild, spanning_tree, section_3, theorem_4_1, no_flips };
+enum class Mode {
+  defaults, automatic, carve, t_division, regions, flips, rebuild, spanning_tree, section_3, theorem_4_1, theorem_5_4, no_flips
+};
 // Every Strategy, and every Strategy and max_flips(0).
 const Mode strategy_modes[] = {Mode::defaults,      Mode::automatic, Mode::carve,       Mode::t_division,
                                Mode::regions,       Mode::flips,     Mode::rebuild,     Mode::spanning_tree,
-                               Mode::section_3,     Mode::theorem_4_1};
+                               Mode::section_3,     Mode::theorem_4_1, Mode::theorem_5_4};
 const Mode all_modes[] = {Mode::defaults,      Mode::automatic, Mode::carve,       Mode::t_division,
                           Mode::regions,       Mode::flips,     Mode::rebuild,     Mode::spanning_tree,
-                          Mode::section_3,     Mode::theorem_4_1, Mode::no_flips};
+                          Mode::section_3,     Mode::theorem_4_1, Mode::theorem_5_4, Mode::no_flips};
 
 inline const char* name_of(Mode m)
 {
@@ -216,6 +218,7 @@ inline const char* name_of(Mode m)
   case Mode::spanning_tree: return "spanning_tree";
   case Mode::section_3: return "section_3";
   case Mode::theorem_4_1: return "theorem_4_1";
+  case Mode::theorem_5_4: return "theorem_5_4";
   case Mode::no_flips: return "max_flips(0)";
   default: return "rebuild";
   }
@@ -236,6 +239,7 @@ DFP::Statistics with_mode(Mode m, const F& body, const DFP::Tuning& tuning = DFP
   case Mode::spanning_tree: return body(P::strategy(DFP::Strategy::spanning_tree));
   case Mode::section_3: return body(P::strategy(DFP::Strategy::section_3));
   case Mode::theorem_4_1: return body(P::strategy(DFP::Strategy::theorem_4_1));
+  case Mode::theorem_5_4: return body(P::strategy(DFP::Strategy::theorem_5_4));
   case Mode::no_flips: return body(P::max_flips(std::size_t(0)));
   default: return body(P::strategy(DFP::Strategy::rebuild));
   }
@@ -447,6 +451,21 @@ inline std::vector<std::size_t> permuted_among(std::size_t n, const std::vector<
   return label;
 }
 
+// `faces` with about one point in `one_in + 1` of 0..n-1 permuted among the chosen ones: long
+// wrong edges and faces that cross each other.
+inline Faces with_points_relabelled(Faces faces, std::size_t n, int one_in, CGAL::Random& rng)
+{
+  std::vector<std::size_t> chosen;
+  for(std::size_t i = 0; i < n; ++i)
+    if(rng.get_int(0, one_in) == 0)
+      chosen.push_back(i);
+  const std::vector<std::size_t> label = permuted_among(n, chosen, rng);
+  for(Face& f : faces)
+    for(auto& v : f)
+      v = label[v];
+  return faces;
+}
+
 // A path through the points 0..n-1 in random order, as index pairs.
 inline std::vector<std::pair<std::size_t, std::size_t>> random_path(std::size_t n, CGAL::Random& rng)
 {
@@ -545,6 +564,17 @@ inline XYs with_duplicates(XYs xy, std::size_t copies, CGAL::Random& rng)
     xy.push_back(xy[std::size_t(rng.get_int(0, int(n)))]);
   shuffle(xy, rng);
   return xy;
+}
+
+// Small degenerate sets for a strategy's own test: a grid, lattice points on circles (many
+// co-circular), duplicates and collinear points (drawn in this order: braced lists evaluate
+// left to right).
+inline std::vector<std::pair<const char*, XYs>> small_degenerate_families(CGAL::Random& rng)
+{
+  return {{"grid", grid_points(40, 40, rng)},
+          {"lattice circle", lattice_circle_points(30, rng, 10)},
+          {"duplicates", with_duplicates(uniform_points(3000, rng), 300, rng)},
+          {"collinear", collinear_points(200, rng)}};
 }
 
 inline XYs transformed(XYs xy, double scale, double offset)
@@ -911,6 +941,33 @@ inline bool built_by_prediction_regions(const DFP::Statistics& s, std::size_t n)
 // rounds ran and it did not fall back: the other strategies with rounds fall back).
 inline bool built_by_theorem_4_1(const DFP::Statistics& s) { return !s.fell_back && s.insertion_rounds > 0; }
 
+// Whether delaunay_from_prediction() imported the completion G' Strategy::theorem_5_4
+// computed (it made a guess of d_cross and did not fall back).
+inline bool built_by_theorem_5_4(const DFP::Statistics& s) { return !s.fell_back && s.d_cross_guesses > 0; }
+
+// A certified face is a face of the result: at most the predicted faces (as point triples)
+// that are faces of DT(points).
+template <class DT>
+void check_certified_faces_are_in_result(const DFP::Statistics& s, const Faces& faces,
+                                         const std::vector<typename DT::Point>& points, const DT& dt)
+{
+  using Point = typename DT::Point;
+  auto orientation = dt.geom_traits().orientation_2_object();
+  const Geometry<Point> result = geometry_of(dt);
+  std::vector<std::array<Point, 3>> predicted;
+  for(const Face& f : faces) {
+    std::array<Point, 3> t = {points[f[0]], points[f[1]], points[f[2]]};
+    if(orientation(t[0], t[1], t[2]) == CGAL::RIGHT_TURN)
+      std::swap(t[1], t[2]);
+    predicted.push_back(canonical(t));
+  }
+  std::sort(predicted.begin(), predicted.end());
+  predicted.erase(std::unique(predicted.begin(), predicted.end()), predicted.end());
+  const std::size_t in_result = predicted.size() - count_missing(predicted, result.faces);
+  DFP_CHECK_MSG(s.faces_certified <= in_result,
+                s.faces_certified << " certified, " << in_result << " predicted faces in the result");
+}
+
 // Statistics that must hold for any call of delaunay_from_prediction.
 //
 // When the prediction is not a triangulation, the local repair may carve faces (the importer's
@@ -923,7 +980,6 @@ template <class DT>
 void check_statistics(const DFP::Statistics& s, const Faces& faces,
                       const std::vector<typename DT::Point>& points, const DT& dt)
 {
-  using Point = typename DT::Point;
   const std::size_t n = points.size();
   DFP_CHECK_MSG(s.faces_in == faces.size(), s.faces_in << " vs " << faces.size());
   DFP_CHECK(s.faces_certified <= s.faces_in);
@@ -938,6 +994,12 @@ void check_statistics(const DFP::Statistics& s, const Faces& faces,
     DFP_CHECK(s.supercells > 0 || s.bad_supercells == 0);
     DFP_CHECK(s.bad_supercells <= s.supercells);
     DFP_CHECK(s.faces_certified <= s.faces_in);
+  } else if(built_by_theorem_5_4(s)) {
+    // Strategy::theorem_5_4 imported its completion G': the import's counts are of G', and
+    // the predicted faces kept (those of G' that are G's, less those the repair changed) are
+    // faces of the result.
+    DFP_CHECK(s.regions_keeping_prediction == 0 || !s.regions_per_level.empty());
+    check_certified_faces_are_in_result(s, faces, points, dt);
   } else if(s.fell_back || built_by_prediction_regions(s, n)) {
     DFP_CHECK_MSG(s.points_reinserted == n, s.points_reinserted << " vs " << n);
     DFP_CHECK(s.faces_certified == 0);
@@ -978,21 +1040,7 @@ void check_statistics(const DFP::Statistics& s, const Faces& faces,
       if(s.points_unused == 0 && s.flips == 0)
         DFP_CHECK(s.faces_certified == s.faces_in);
     }
-    // A certified face is a face of the result: at most the predicted faces (as point triples)
-    // that are faces of DT(points).
-    const Geometry<Point> result = geometry_of(dt);
-    std::vector<std::array<Point, 3>> predicted;
-    for(const Face& f : faces) {
-      std::array<Point, 3> t = {points[f[0]], points[f[1]], points[f[2]]};
-      if(orientation(t[0], t[1], t[2]) == CGAL::RIGHT_TURN)
-        std::swap(t[1], t[2]);
-      predicted.push_back(canonical(t));
-    }
-    std::sort(predicted.begin(), predicted.end());
-    predicted.erase(std::unique(predicted.begin(), predicted.end()), predicted.end());
-    const std::size_t in_result = predicted.size() - count_missing(predicted, result.faces);
-    DFP_CHECK_MSG(s.faces_certified <= in_result,
-                  s.faces_certified << " certified, " << in_result << " predicted faces in the result");
+    check_certified_faces_are_in_result(s, faces, points, dt);
   }
 }
 

@@ -87,7 +87,8 @@ const char* const usage_text =
     "                     scratch; exit status 3 if they differ\n"
     "  --threads N        run on N threads (0: all cores; default 1); the result is the same\n"
     "  --strategy NAME    automatic (default), flips, carve, t_division, regions, rebuild,\n"
-    "                     spanning_tree, section_3, theorem_4_1: see the manual\n"
+    "                     spanning_tree, section_3, theorem_4_1, theorem_5_4: see the\n"
+    "                     manual\n"
     "  --cgal             ignore the prediction and build with CGAL's Delaunay_triangulation_2\n"
     "                     (range insertion), for comparisons; kinetic: every frame so\n"
     "  --quiet            no progress lines on stderr (printed for files over 64 MiB)\n";
@@ -118,7 +119,7 @@ DFP::Strategy strategy_named(const std::string& name)
       {"carve", DFP::Strategy::carve},         {"t_division", DFP::Strategy::t_division},
       {"regions", DFP::Strategy::regions},     {"rebuild", DFP::Strategy::rebuild},
       {"spanning_tree", DFP::Strategy::spanning_tree}, {"section_3", DFP::Strategy::section_3},
-      {"theorem_4_1", DFP::Strategy::theorem_4_1}};
+      {"theorem_4_1", DFP::Strategy::theorem_4_1},     {"theorem_5_4", DFP::Strategy::theorem_5_4}};
   for(const auto& n : names)
     if(name == n.first)
       return n.second;

@@ -233,6 +233,13 @@ py::dict stats_dict(const DFP::Statistics& s)
   d["walls"] = s.walls;
   d["chain_edges"] = s.chain_edges;
   d["cells_computed"] = s.cells_computed;
+  py::list regions_per_level;
+  for(const std::size_t r : s.regions_per_level)
+    regions_per_level.append(r);
+  d["regions_per_level"] = regions_per_level;
+  d["boundary_crossings"] = s.boundary_crossings;
+  d["regions_keeping_prediction"] = s.regions_keeping_prediction;
+  d["d_cross_guesses"] = s.d_cross_guesses;
   d["fallback_reason"] = std::string(DFP::to_string(s.outcome));
   return d;
 }

@@ -10,6 +10,7 @@
 #include <stdexcept>
 #include <string>
 #include <utility>
+#include <vector>
 
 namespace CGAL {
 namespace Delaunay_from_prediction {
@@ -255,6 +256,19 @@ struct Statistics
   /// `Strategy::theorem_4_1`: the cells whose Delaunay triangles were computed from their
   /// conflict lists (the exceptional cells and the cells of bad supercells).
   std::size_t cells_computed = 0;
+  /// `Strategy::theorem_5_4`: the regions of the t-divisions at each level of the recursion
+  /// (level 0 divides the prediction), in the run of the last guess of \f$d_{cross}\f$; empty
+  /// when that run was the base case (a build from scratch).
+  std::vector<std::size_t> regions_per_level;
+  /// `Strategy::theorem_5_4`: the edges of the regions' triangulations \f$DT(V_\gamma)\f$ that
+  /// cross their region's boundary (\f$|X_\gamma|\f$ summed over every region of every level).
+  std::size_t boundary_crossings = 0;
+  /// `Strategy::theorem_5_4`: the regions whose triangulation could not be walked (collinear
+  /// points, a duplicate point on the boundary), which kept the prediction's own faces.
+  std::size_t regions_keeping_prediction = 0;
+  /// `Strategy::theorem_5_4`: the guesses \f$b = 2^{2^j}\f$ of \f$d_{cross}\f$ made (the last
+  /// one's run finished within its cap).
+  std::size_t d_cross_guesses = 0;
   /// what the call made of the prediction: `Outcome::ok` when it was used, otherwise why the
   /// call built from scratch (`to_string(outcome)` says it in a sentence).
   Outcome outcome = Outcome::ok;
@@ -264,7 +278,8 @@ struct Statistics
 \ingroup PkgDelaunayFromPredictionRef
 writes `s` to `out`, one `name: value` line per member, named as the members are: always
 `faces_in`, `faces_certified`, `flips`, `points_reinserted` and `fell_back` (`true` or
-`false`), then every other count that is not 0, the flag `input_reordered` when set, and
+`false`), then every other count that is not 0, `regions_per_level` (its values on one line)
+when it is not empty, the flag `input_reordered` when set, and
 `outcome` (`to_string()`'s sentence) when it is not `Outcome::ok`.
 \param out the stream.
 \param s the statistics.
@@ -286,10 +301,18 @@ inline std::ostream& operator<<(std::ostream& out, const Statistics& s)
       {"largest_conflict_list", s.largest_conflict_list}, {"points_relocated", s.points_relocated},
       {"exceptional_cells", s.exceptional_cells}, {"supercells", s.supercells},
       {"bad_supercells", s.bad_supercells},     {"walls", s.walls},
-      {"chain_edges", s.chain_edges},           {"cells_computed", s.cells_computed}};
+      {"chain_edges", s.chain_edges},           {"cells_computed", s.cells_computed},
+      {"boundary_crossings", s.boundary_crossings}, {"regions_keeping_prediction", s.regions_keeping_prediction},
+      {"d_cross_guesses", s.d_cross_guesses}};
   for(const auto& c : counts)
     if(c.second != 0)
       out << c.first << ": " << c.second << "\n";
+  if(!s.regions_per_level.empty()) {
+    out << "regions_per_level:";
+    for(const std::size_t r : s.regions_per_level)
+      out << " " << r;
+    out << "\n";
+  }
   if(s.input_reordered)
     out << "input_reordered: true\n";
   if(s.outcome != Outcome::ok)

@@ -108,7 +108,21 @@ enum class Strategy {
   /// named in the manual: the cells are the sample's Voronoi cells, the supercells grown
   /// breadth-first, the chains traced crossing by crossing. For comparing the theory with the
   /// practical strategies; slower than the default.
-  theorem_4_1
+  theorem_4_1,
+  /// Theorem 5.4 of the paper (`delaunay_from_prediction()` only; `make_delaunay()` treats it
+  /// as `rebuild`): the recursion over the prediction's regions. Each level divides its faces
+  /// into regions of at most about \f$t = \max(\lceil \log_2 \mu \rceil^2, b^2)\f$ faces,
+  /// computes each region's Delaunay triangulation recursively (from scratch at most
+  /// \f$b^2\f$ faces), keeps its triangles that lie inside the region, uncut by the region's
+  /// boundary (found by walking each boundary segment through it), and repairs their union
+  /// \f$G'\f$ with the package's D-sensitive repair (import with its certificate, local
+  /// repair of the seams, Lawson's flips); the top level's \f$G'\f$ is repaired by the
+  /// call's own stages. \f$d_{cross}\f$ is guessed as in the proof: \f$b = 2^{2^j}\f$ from
+  /// \f$j = \lceil \log_2 \log^* \mu \rceil\f$, each run capped at \f$\mu 2^j\f$ units of
+  /// work. Substitutions, named in the manual: the package's region growing for the
+  /// t-division, walks instead of ray shooting, the seams filled by the import's hole tracer.
+  /// For comparing the theory with the practical strategies; slower than the default.
+  theorem_5_4
 };
 
 /*!
@@ -172,6 +186,12 @@ struct Tuning
   /// build, 2 blocks 1.23x, 8 blocks 1.51x (bench_region_build). Tests lower it to build in
   /// blocks at small sizes.
   std::size_t min_points_per_block = std::size_t(1) << 15;
+  /// `Strategy::theorem_5_4`: the first \f$j\f$ of the guesses \f$b = 2^{2^j}\f$ of
+  /// \f$d_{cross}\f$; -1 (the default) starts where the proof does, at \f$\lceil \log_2
+  /// \log^* \mu \rceil\f$ for \f$\mu\f$ faces: 2 up to 65,536 faces (a base case of
+  /// \f$b^2 = 256\f$ faces), 3 beyond (65,536 faces). Tests and benchmarks set 0 or 1 to make the
+  /// recursion deep on small inputs.
+  int d_cross_first_guess = -1;
 };
 
 /// \ingroup PkgDelaunayFromPredictionRef

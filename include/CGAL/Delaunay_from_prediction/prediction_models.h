@@ -4,9 +4,9 @@
 //
 // Generators of predictions for experiments and tests, all seeded and reproducible: the rho
 // model of Section 1.3 of "Delaunay Triangulations with Predictions", the random-flip model of
-// its Lemma 6.5, k random flips, Delaunay triangulations of moved points, the sorting and
-// list-merging configurations of its Figures 1 and 2, and non-triangulations (holes,
-// self-crossing labelings, random triples).
+// its Lemma 6.5, order-k Delaunay triangulations (its Section 7), k random flips, Delaunay
+// triangulations of moved points, the sorting and list-merging configurations of its Figures 1
+// and 2, and non-triangulations (holes, self-crossing labelings, random triples).
 //
 // Every generator that changes a triangulation does it by edge flips on a CGAL triangulation
 // data structure built from DT(P); a flip is made only when the two faces form a strictly
@@ -33,6 +33,7 @@
 #include <iterator>
 #include <limits>
 #include <stdexcept>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -134,6 +135,68 @@ std::vector<Indexed_triangle> k_flip_prediction(const PointRange& points, std::s
   for(std::size_t draws = 64 * (k + edges.number_of_edges()); flips < k && draws > 0; --draws)
     if(edges.draw(random, f, i) && internal::flip_if_convex(dt, f, i))
       ++flips;
+  return internal::faces_of(dt);
+}
+
+/*!
+\ingroup PkgDelaunayFromPredictionRef
+an order-\f$k\f$ Delaunay triangulation (the setting of Section 7 of the paper: a triangulation
+with \f$d_{vio} \le k\f$): starting from \f$DT(P)\f$ with \f$m\f$ edges, `draws` times (default
+\f$m\f$), draw an edge uniformly at random and flip it if its two faces form a strictly convex
+quadrilateral and each of the two faces the flip makes has at most `k` points of \f$P\f$
+strictly inside its (perturbed) circumcircle. Every face of the result is a face of
+\f$DT(P)\f$ or was made by such a flip, so \f$d_{vio} \le k\f$, as `prediction_measures()`
+counts it; `k` = 0 gives \f$DT(P)\f$ (a flip puts a point inside one of its faces' circles),
+and a `k` of \f$n\f$ or more gives the random-flip model with \f$(1 - \rho) m\f$ = `draws`.
+Each test counts the points inside a circle by a search in \f$DT(P)\f$ that stops past `k`:
+\f$O(k)\f$ work a draw, apart from high-degree vertices.
+\param points the points.
+\param k the largest number of points inside a face's circumcircle.
+\param seed the seed; the same seed gives the same triangulation.
+\param draws the number of edges drawn; (std::numeric_limits<std::size_t>::max)() means \f$m\f$.
+\returns the faces, each three point indices.
+*/
+template <class PointRange>
+std::vector<Indexed_triangle> order_k_prediction(const PointRange& points, std::size_t k,
+                                                 std::uint64_t seed,
+                                                 std::size_t draws = (std::numeric_limits<std::size_t>::max)())
+{
+  const auto delaunay = internal::indexed_delaunay(points);
+  using DT = std::remove_const_t<decltype(delaunay)>;
+  using Vertex_handle = typename DT::Vertex_handle;
+  DT dt = delaunay; // flipped; `delaunay` answers the circle counts
+  std::vector<Vertex_handle> vertex_of(std::size_t(std::distance(std::begin(points), std::end(points))));
+  for(auto v = delaunay.finite_vertices_begin(); v != delaunay.finite_vertices_end(); ++v)
+    vertex_of[v->info()] = v;
+  const internal::Random_edges<DT> edges(dt);
+  internal::Splitmix64 random{seed};
+  if(draws == (std::numeric_limits<std::size_t>::max)())
+    draws = edges.number_of_edges();
+  std::vector<std::uint32_t> mark(vertex_of.size(), 0);
+  std::uint32_t stamp = 0;
+  std::vector<Vertex_handle> queue;
+  // Points of P strictly inside the circle of the ccw triangle (a, b, c), at most k + 1.
+  const auto inside = [&](Vertex_handle a, Vertex_handle b, Vertex_handle c) {
+    if(++stamp == 0) { // wrapped around: clear the marks
+      std::fill(mark.begin(), mark.end(), 0);
+      stamp = 1;
+    }
+    return internal::count_points_in_circle(delaunay, vertex_of[a->info()], vertex_of[b->info()],
+                                            vertex_of[c->info()], mark, stamp, queue, k);
+  };
+  typename DT::Face_handle f;
+  int i;
+  for(std::size_t draw = 0; draw < draws; ++draw) {
+    if(!edges.draw(random, f, i) || dt.is_infinite(f->neighbor(i)))
+      continue;
+    // The flip of the edge b c of the ccw face (a, b, c), d across it, makes (a, b, d) and (a, d, c).
+    const Vertex_handle a = f->vertex(i), b = f->vertex(DT::ccw(i)), c = f->vertex(DT::cw(i)),
+                        d = f->neighbor(i)->vertex(dt.tds().mirror_index(f, i));
+    if(!internal::flip_makes_ccw_faces(dt.geom_traits(), a->point(), b->point(), c->point(), d->point()))
+      continue;
+    if(inside(a, b, d) <= k && inside(a, d, c) <= k)
+      dt.tds().flip(f, i);
+  }
   return internal::faces_of(dt);
 }
 

@@ -54,7 +54,11 @@ enum class Stage {
   /// `Strategy::theorem_4_1`: Theorem 4.1's computation of the faces (the rounds, the cells,
   /// the supercells, their walls and good test, the cells of the bad supercells), before the
   /// import certifies them.
-  supercells
+  supercells,
+  /// `Strategy::theorem_5_4`: Theorem 5.4's recursion over the prediction's regions and its
+  /// guesses of \f$d_{cross}\f$, which compute the completion \f$G'\f$ that the import, the
+  /// local repair and the flips then make Delaunay (the proof's step 6).
+  region_recursion
 };
 
 /*!
@@ -67,7 +71,7 @@ inline const char* to_string(Stage stage)
 {
   constexpr const char* names[] = {"check", "screen",     "order",   "import", "certify", "untangle",
                                    "carve", "t_division", "regions", "flips",  "insert",  "rebuild",
-                                   "supercells"};
+                                   "supercells", "region_recursion"};
   return names[static_cast<int>(stage)];
 }
 

@@ -101,7 +101,7 @@ expect_status 0 triangulate z.node -o z.ele --check
 # --threads and the strategies: the same triangles.
 expect_status 0 triangulate a.node --prediction a.ele -o t.ele --threads 2 --check
 [ "$(triangles_of t.ele)" = "$(triangles_of a.ele)" ] || fail "--threads 2 gave other triangles"
-for s in automatic flips carve t_division regions rebuild spanning_tree section_3 theorem_4_1; do
+for s in automatic flips carve t_division regions rebuild spanning_tree section_3 theorem_4_1 theorem_5_4; do
   expect_status 0 triangulate a.node --prediction a.ele -o s.ele --strategy $s --check
   [ "$(triangles_of s.ele)" = "$(triangles_of a.ele)" ] || fail "--strategy $s gave other triangles"
 done

@@ -116,10 +116,12 @@ def test_stats_dict():
                 "boundary_vertices", "edges_in", "points_located", "faces_visited", "walk_fallbacks",
                 "insertion_rounds", "conflict_list_entries", "largest_conflict_list", "points_relocated",
                 "exceptional_cells", "supercells", "bad_supercells", "walls", "chain_edges", "cells_computed",
+                "regions_per_level", "boundary_crossings", "regions_keeping_prediction", "d_cross_guesses",
                 "fallback_reason"}
     assert set(stats) == expected
     assert isinstance(stats["fallback_reason"], str) and stats["fallback_reason"] == ""
     assert isinstance(stats["fell_back"], bool) and isinstance(stats["flips"], int)
+    assert stats["regions_per_level"] == []
     _, stats = dfp.delaunay_from_prediction(points, None)
     assert stats["fell_back"] and stats["fallback_reason"] != ""
 

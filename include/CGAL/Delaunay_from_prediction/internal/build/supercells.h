@@ -85,8 +85,6 @@ namespace CGAL {
 namespace Delaunay_from_prediction {
 namespace internal {
 
-inline std::uint64_t directed_edge_key(std::uint32_t p, std::uint32_t q) { return (std::uint64_t(p) << 32) | q; }
-
 // Theorem 4.1's parameters for n points: the last round's divisor s_3, the exceptional
 // cells' threshold b s_3 with the paper's b = s_3, times 6 because a Voronoi cell is the union
 // of about six cells of Decomp(R*), and the supercell size t = s_3^4 (cells).

@@ -185,10 +185,12 @@ struct Import_limits
     std::size_t frontier; // open half-edges of its frontiers, not counted as holes
   };
 
+  // `hole_halfedges`: the open half-edges of holes the caller's repair takes on (the
+  // pipeline's max_open_halfedges(), n/4 + 64 by default).
   Import_limits(std::size_t n, std::size_t all_faces, std::size_t max_failing_edges, bool tolerant_import,
-                bool faces_sorted_by_band)
-      : faces(all_faces), root(std::size_t(std::sqrt(double(n)))), max_hole_halfedges(n / 4 + 64),
-        max_open(max_hole_halfedges + 32 * root), max_failing(max_failing_edges), max_dropped(all_faces / 64 + 64),
+                bool faces_sorted_by_band, std::size_t hole_halfedges)
+      : faces(all_faces), root(std::size_t(std::sqrt(double(n)))), max_hole_halfedges(hole_halfedges),
+        max_open(hole_halfedges > std::size_t(-1) - 32 * root ? std::size_t(-1) : hole_halfedges + 32 * root), max_failing(max_failing_edges), max_dropped(all_faces / 64 + 64),
         tolerant(tolerant_import), faces_sorted(faces_sorted_by_band)
   {}
 
@@ -198,7 +200,8 @@ struct Import_limits
   // before and after it).
   Stretch chunk(std::size_t size) const
   {
-    return Stretch{size, max_hole_halfedges * size / faces + 64 * root, 16 * root};
+    const double share = double(max_hole_halfedges) * double(size) / double(faces) + double(64 * root);
+    return Stretch{size, share >= double(max_open) ? max_open : std::size_t(share), 16 * root};
   }
 
   // Tolerant import: the half-edges still open are the moving frontier when the faces come
@@ -383,10 +386,13 @@ public:
   template <class PointIterator, class Visitor = Default_visitor>
   static void run(Triangulation& tr, PointIterator points, std::size_t n, std::vector<std::uint32_t>& triples,
                   Imported_prediction<Triangulation>& out, bool tolerant, bool parallel = false,
-                  Visitor&& visitor = Visitor(), std::size_t max_failing = std::size_t(-1))
+                  Visitor&& visitor = Visitor(), std::size_t max_failing = std::size_t(-1),
+                  std::size_t max_hole_halfedges = 0)
   {
     Prediction_importer importer(tr, n, triples.size() / 3, out, tolerant);
     importer.max_failing_ = max_failing; // failing edges past which the import stops (extrapolated)
+    // Open half-edges of holes past which the import stops (0: n/4 + 64, the pipeline's default).
+    importer.max_hole_halfedges_ = max_hole_halfedges == 0 ? n / 4 + 64 : max_hole_halfedges;
     visitor.stage_begin(Stage::order);
     Spatial_order order;
     order.compute(tr.geom_traits(), points, n, triples, parallel);
@@ -421,7 +427,7 @@ private:
 
   Import_limits import_limits(const Spatial_order& order) const
   {
-    return Import_limits(n_, number_of_faces_, max_failing_, tolerant_, order.faces_sorted());
+    return Import_limits(n_, number_of_faces_, max_failing_, tolerant_, order.faces_sorted(), max_hole_halfedges_);
   }
 
   Face_handle face_of(std::uintptr_t code) const
@@ -1091,6 +1097,7 @@ private:
   Imported_prediction<Triangulation>& out_;
   const bool tolerant_;
   std::size_t max_failing_ = std::size_t(-1); // see run()
+  std::size_t max_hole_halfedges_ = 0;         // see run()
 };
 
 } // namespace internal

@@ -26,6 +26,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <functional>
+#include <limits>
 #include <string>
 #include <utility>
 #include <vector>
@@ -185,12 +186,14 @@ std::size_t count_crossings(const DT& dt, typename DT::Vertex_handle u, typename
 // at every vertex that is not a minimizer, so every vertex below h has a descending path to
 // the lowest vertex that stays below h, and a (on h, not lowest when some point is below h)
 // has a neighbour below h. So the vertices below h and a form one connected subgraph of DT.
-// `mark` has one entry per vertex info; `stamp` is new for each call.
+// `mark` has one entry per vertex info; `stamp` is new for each call. The search stops once
+// more than `limit` points are found (it then returns limit + 1).
 template <class DT>
 std::size_t count_points_in_circle(const DT& dt, typename DT::Vertex_handle a,
                                    typename DT::Vertex_handle b, typename DT::Vertex_handle c,
                                    std::vector<std::uint32_t>& mark, std::uint32_t stamp,
-                                   std::vector<typename DT::Vertex_handle>& queue)
+                                   std::vector<typename DT::Vertex_handle>& queue,
+                                   std::size_t limit = (std::numeric_limits<std::size_t>::max)())
 {
   const auto& gt = dt.geom_traits();
   std::size_t inside = 0;
@@ -207,7 +210,8 @@ std::size_t count_points_in_circle(const DT& dt, typename DT::Vertex_handle a,
       mark[vc->info()] = stamp;
       if(side_of_oriented_circle_perturbed(gt, a->point(), b->point(), c->point(), vc->point()) ==
          ON_POSITIVE_SIDE) {
-        ++inside;
+        if(++inside > limit)
+          return inside;
         queue.push_back(vc);
       }
     } while(++vc != done);

@@ -67,13 +67,17 @@ public:
 
   Outcome reason_not_to_use_prediction() const
   {
-    // Theorem 4.1 needs faces to take a spanning tree from: make_delaunay() rebuilds.
-    return options_.uses_prediction() && options_.strategy != Strategy::theorem_4_1 ? Outcome::ok
-                                                                                      : Outcome::rebuild_requested;
+    // Theorems 4.1 and 5.4 run on index triples only: make_delaunay() rebuilds.
+    return options_.uses_prediction() && options_.strategy != Strategy::theorem_4_1 &&
+                   options_.strategy != Strategy::theorem_5_4
+               ? Outcome::ok
+               : Outcome::rebuild_requested;
   }
 
-  // Theorem 4.1 runs on index triples only (reason_not_to_use_prediction() rules it out here).
+  // Theorems 4.1 and 5.4 run on index triples only (reason_not_to_use_prediction() rules them
+  // out here).
   Outcome compute_by_supercells() { return Outcome::rebuild_requested; }
+  Outcome compute_by_region_recursion() { return Outcome::rebuild_requested; }
 
   bool can_build_by_regions() const
   {

@@ -16,6 +16,7 @@
 #include <CGAL/Delaunay_from_prediction/internal/build/rebuild.h>
 #include <CGAL/Delaunay_from_prediction/internal/build/conflict_list_rounds.h>
 #include <CGAL/Delaunay_from_prediction/internal/build/spanning_tree_insertion.h>
+#include <CGAL/Delaunay_from_prediction/internal/build/region_recursion.h>
 #include <CGAL/Delaunay_from_prediction/internal/build/supercells.h>
 #include <CGAL/Delaunay_from_prediction/internal/check/input_check.h>
 #include <CGAL/Delaunay_from_prediction/internal/check/prediction_screens.h>
@@ -24,11 +25,14 @@
 #include <CGAL/Delaunay_from_prediction/internal/repair/flips.h>
 #include <CGAL/Delaunay_from_prediction/internal/repair/sort_addresses.h>
 #include <CGAL/Delaunay_from_prediction/internal/repair/t_division_repair.h>
+#include <CGAL/Delaunay_from_prediction/internal/toolbox/hash_map.h>
 #include <CGAL/Delaunay_from_prediction/internal/toolbox/predicates.h>
 #include <CGAL/Delaunay_from_prediction/internal/toolbox/vertex_info.h>
 
+#include <array>
 #include <algorithm>
 #include <cstddef>
+#include <cstring>
 #include <cstdint>
 #include <memory>
 #include <utility>
@@ -37,6 +41,11 @@
 namespace CGAL {
 namespace Delaunay_from_prediction {
 namespace internal {
+
+template <class DT>
+bool repair_region_completion(const typename DT::Geom_traits& gt, const std::vector<typename DT::Point>& points,
+                              const std::vector<std::uint32_t>& triples, std::size_t budget,
+                              std::vector<std::uint32_t>& out, std::size_t& work);
 
 // The points point_at[0..n) and the faces `faces` (number_of_faces of them) into `dt`.
 //
@@ -110,6 +119,37 @@ public:
     return Outcome::ok;
   }
 
+  // Theorem 5.4 (region_recursion.h): the prediction's faces replaced by the completion G'
+  // its recursion computes; the stages that follow are its step 6.
+  Outcome compute_by_region_recursion()
+  {
+    if(n_ >= std::size_t(no_region))
+      return Outcome::ok;
+    auto point = [this](std::uint32_t g) -> decltype(point_at_[0]) { return point_at_[g]; };
+    // Step 6 inside the recursion: the same stages on a region's points and its G'.
+    auto repair = [&](const std::vector<std::uint32_t>& global, const std::vector<std::uint32_t>& triples,
+                      std::size_t budget, std::vector<std::uint32_t>& out, std::size_t& work) {
+      std::vector<typename DT::Point> points;
+      points.reserve(global.size());
+      for(const std::uint32_t g : global)
+        points.push_back(point_at_[g]);
+      return repair_region_completion<DT>(dt_.geom_traits(), points, triples, budget, out, work);
+    };
+    std::vector<std::uint32_t> completion;
+    Region_recursion_report report;
+    if(completion_by_region_recursion(dt_.geom_traits(), point, n_, triples_, repair,
+                                      options_.tuning.d_cross_first_guess, completion, report)) {
+      triples_.swap(completion);
+      number_of_faces_ = triples_.size() / 3;
+      predicted_faces_kept_ = report.counts.predicted_faces_kept;
+    }
+    stats_.regions_per_level = report.counts.regions_per_level;
+    stats_.boundary_crossings = report.counts.crossings;
+    stats_.regions_keeping_prediction = report.counts.regions_keeping_prediction;
+    stats_.d_cross_guesses = report.guesses;
+    return Outcome::ok;
+  }
+
   // The screens that reject the prediction before its import: Outcome::ok when none does.
   Outcome screen() const
   {
@@ -132,7 +172,8 @@ public:
   {
     Prediction_importer<DT>::run(result_, point_at_, n_, triples_, imported_, options_.repairs_locally(),
                                  options_.parallel, run.visitor,
-                                 options_.default_flip_budget ? options_.failing_edges_limit() : std::size_t(-1));
+                                 options_.default_flip_budget ? options_.failing_edges_limit() : std::size_t(-1),
+                                 options_.max_open_halfedges());
     stats_.input_reordered = imported_.reordered;
     if(imported_.failure != Outcome::ok)
       return imported_.failure;
@@ -196,8 +237,9 @@ public:
     else
       stats_.faces_certified = count_faces_kept();
     if(predicted_faces_kept_ != none_kept) {
-      // Theorem 4.1 imported its own faces: the predicted ones among them are those its good
-      // supercells kept, less any face the certificate's repair changed.
+      // Theorem 4.1 or 5.4 imported its own faces: the predicted ones among them are those
+      // its good supercells kept (Theorem 5.4: the faces of G'), less any face the
+      // certificate's repair changed.
       const std::size_t changed = number_of_faces_ - (std::min)(number_of_faces_, stats_.faces_certified);
       // Never more than the faces read, should two supercells keep the same face.
       stats_.faces_certified =
@@ -343,8 +385,98 @@ private:
   std::vector<Face_handle> touched_;    // faces flipped
   std::vector<const void*> new_vertices_; // the unused points inserted
   static constexpr std::size_t none_kept = std::size_t(-1);
-  std::size_t predicted_faces_kept_ = none_kept; // Theorem 4.1's good faces, when it ran
+  std::size_t predicted_faces_kept_ = none_kept; // Theorem 4.1's good faces or 5.4's G', when it ran
 };
+
+// The index of each point of `points`, found from the point: the smallest index of the
+// points equal to it. Hashed on the nearest doubles, compared exactly.
+template <class Point>
+class Point_index
+{
+public:
+  static constexpr std::uint32_t none = std::uint32_t(-1);
+
+  explicit Point_index(const std::vector<Point>& points)
+      : points_(points), next_(points.size(), none), first_(2 * points.size() + 16)
+  {
+    for(std::size_t k = points.size(); k-- > 0;) { // each chain in increasing indices
+      const auto inserted = first_.insert(key(points[k]), std::uint32_t(k));
+      if(!inserted.second) {
+        next_[k] = *inserted.first;
+        *inserted.first = std::uint32_t(k);
+      }
+    }
+  }
+
+  std::uint32_t of(const Point& p) const
+  {
+    const std::uint32_t* k = first_.find(key(p));
+    for(std::uint32_t i = k ? *k : none; i != none; i = next_[i])
+      if(points_[i] == p)
+        return i;
+    return none;
+  }
+
+private:
+  static std::uint64_t key(const Point& p)
+  {
+    // + 0.0 makes -0.0 the same key as 0.0, as the points are equal.
+    const double x = CGAL::to_double(p.x()) + 0.0, y = CGAL::to_double(p.y()) + 0.0;
+    std::uint64_t a, b;
+    std::memcpy(&a, &x, sizeof a);
+    std::memcpy(&b, &y, sizeof b);
+    const std::uint64_t h = (a * 0x9E3779B97F4A7C15ull) ^ (b + 0x632BE59BD9B4E019ull + (a >> 29));
+    return h == Hash_map<std::uint64_t, std::uint32_t>::free_key() ? 0 : h;
+  }
+
+  const std::vector<Point>& points_;
+  std::vector<std::uint32_t> next_;
+  Hash_map<std::uint64_t, std::uint32_t> first_;
+};
+
+// Step 6 of Theorem 5.4's recursion (region_recursion.h): DT(points) from their faces `triples`
+// by the package's stages (import with its certificate, local repair of every hole, flips,
+// insertion of the points in no face), sequentially, with at most `budget` flips, into `out`
+// as index triples (of the smallest index among equal points). On the caller's triangulation
+// type, with the point and face ranges of the common case (a std::vector of points, of
+// std::array<std::size_t, 3>), so that a caller with those compiles the stages once.
+// Adds the flips to `work`, and m log2 m for a region of m points built from scratch. False
+// when the flips would pass the budget.
+template <class DT>
+bool repair_region_completion(const typename DT::Geom_traits& gt, const std::vector<typename DT::Point>& points,
+                              const std::vector<std::uint32_t>& triples, std::size_t budget,
+                              std::vector<std::uint32_t>& out, std::size_t& work)
+{
+  using Faces = std::vector<std::array<std::size_t, 3>>;
+  Faces faces(triples.size() / 3);
+  for(std::size_t t = 0; t < faces.size(); ++t)
+    faces[t] = {triples[3 * t], triples[3 * t + 1], triples[3 * t + 2]};
+  Pipeline_options options;
+  options.n = points.size();
+  options.max_flips = budget;
+  options.default_flip_budget = false;
+  options.screen = false;
+  options.fills_every_hole = true;
+  options.region_size = default_region_size(points.size());
+  DT dt(gt);
+  Index_triples_stages<DT, typename std::vector<typename DT::Point>::const_iterator, Faces> stages(
+      points.begin(), points.size(), faces, faces.size(), dt, options);
+  Default_visitor visitor;
+  const Statistics s = run_prediction_pipeline(stages, options, visitor);
+  work += s.flips;
+  if(s.fell_back) {
+    if(s.outcome == Outcome::flip_budget_exhausted)
+      return false;
+    work += points.size() * ceil_log2(points.size());
+  }
+  const Point_index<typename DT::Point> index(points);
+  out.clear();
+  out.reserve(6 * points.size());
+  for(auto f = dt.finite_faces_begin(); f != dt.finite_faces_end(); ++f)
+    for(int i = 0; i < 3; ++i)
+      out.push_back(index.of(f->vertex(i)->point()));
+  return true;
+}
 
 } // namespace internal
 } // namespace Delaunay_from_prediction

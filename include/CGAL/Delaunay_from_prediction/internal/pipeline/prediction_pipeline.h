@@ -66,6 +66,10 @@ struct Pipeline_options
   std::size_t region_size = 0;
   Tuning tuning;
   bool parallel = false;
+  // Theorem 5.4's step 6 inside its recursion (region_recursion.h): the faces are a region's
+  // completion G', whose seams and pockets up to the convex hull are the proof's steps 4 and 5,
+  // filled whatever their number.
+  bool fills_every_hole = false;
 
   // Whether the prediction is used at all (Strategy::rebuild and Strategy::spanning_tree
   // build from scratch).
@@ -78,7 +82,7 @@ struct Pipeline_options
   bool repairs_locally() const
   {
     return strategy == Strategy::automatic || strategy == Strategy::carve || strategy == Strategy::t_division ||
-           strategy == Strategy::theorem_4_1;
+           strategy == Strategy::theorem_4_1 || strategy == Strategy::theorem_5_4;
   }
   // A budget the caller set is a hard limit: more failing edges than flips rebuild at once.
   // The default one is an estimate, and so is the limit (max_failing_edges()).
@@ -97,11 +101,14 @@ struct Pipeline_options
   // Faces missing from index triples, told by counting (missing_faces_exceed()): past n/8
   // the local repair would not pay; without it, past n/64 the faces cannot be a triangulation
   // (any excess shows that, the margin keeps the count off the common case of about 2n faces).
-  std::size_t max_missing_faces() const { return repairs_locally() ? n / 8 + 16 : n / 64 + 16; }
+  std::size_t max_missing_faces() const
+  {
+    return fills_every_hole ? 2 * n + 16 : repairs_locally() ? n / 8 + 16 : n / 64 + 16; // 2n: no limit
+  }
   // Half-edges left open by the import (hole boundaries): tracing and filling costs about
   // 2 us per such half-edge at 1e6 points (1% of a DT's faces deleted: 60,000 of them,
   // 0.12 s), a rebuild about 0.75 us per point, so past n/4 the repair costs more.
-  std::size_t max_open_halfedges() const { return n / 4 + 64; }
+  std::size_t max_open_halfedges() const { return fills_every_hole ? 6 * n + 64 : n / 4 + 64; } // 6n: no limit
   // Faces not counterclockwise that the local repair takes on (default_carve_limits()).
   std::size_t max_inverted_faces() const { return default_carve_limits(n).max_bad_faces; }
   // Points reinserted by the t-division make a few flips each, as in any incremental
@@ -166,6 +173,11 @@ Outcome use_prediction(Stages& stages, const Pipeline_options& options, const St
   if(why == Outcome::ok && options.strategy == Strategy::theorem_4_1) {
     // Theorem 4.1 (supercells.h) computes the faces, which the stages below certify.
     why = run(Stage::supercells, [&] { return stages.compute_by_supercells(); });
+  }
+  if(why == Outcome::ok && options.strategy == Strategy::theorem_5_4) {
+    // Theorem 5.4 (region_recursion.h) computes the completion G'; the stages below are its
+    // step 6.
+    why = run(Stage::region_recursion, [&] { return stages.compute_by_region_recursion(); });
   }
   if(why == Outcome::ok)
     why = run(Stage::screen, [&] { return stages.screen(); });

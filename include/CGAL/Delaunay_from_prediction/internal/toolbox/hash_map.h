@@ -26,6 +26,14 @@ namespace CGAL {
 namespace Delaunay_from_prediction {
 namespace internal {
 
+// The key of the directed edge a -> b between vertices of 32-bit indices, and of the edge
+// {a, b} whatever its direction.
+inline std::uint64_t directed_edge_key(std::uint32_t a, std::uint32_t b) { return (std::uint64_t(a) << 32) | b; }
+inline std::uint64_t undirected_edge_key(std::uint32_t a, std::uint32_t b)
+{
+  return a < b ? directed_edge_key(a, b) : directed_edge_key(b, a);
+}
+
 template <class Key, class Value>
 class Hash_map
 {
