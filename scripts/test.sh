@@ -5,8 +5,9 @@
 # CGAL's), the tool dfp on files and the Python module (pytest), in Release, in build/ at the
 # repository root. Installs the build dependencies with apt-get if they are missing.
 # With --all it builds and runs every test (the other suites, the differential fuzzer's fixed
-# cases, each public header alone, the compile-time refusals) and builds the benchmarks (never
-# run), in the same build/: what CI runs. After a quick run it compiles only what is missing.
+# cases, each public header alone, the compile-time refusals) and type-checks the benchmarks
+# (-fsyntax-only: no programs; build them with cmake -DDFP_BUILD_BENCHMARKS=ON
+# -DDFP_BENCHMARKS_SYNTAX_ONLY=OFF), in the same build/: what CI runs. After a quick run it compiles only what is missing.
 # Usage: scripts/test.sh [--all]   (from any directory)
 set -euo pipefail
 
@@ -15,7 +16,7 @@ start=$(date +%s)
 
 case "${1:-}" in
   "") options=(-DDFP_QUICK_TESTS=ON -DDFP_BUILD_BENCHMARKS=OFF) ;;
-  --all) options=(-DDFP_QUICK_TESTS=OFF -DDFP_BUILD_BENCHMARKS=ON) ;;
+  --all) options=(-DDFP_QUICK_TESTS=OFF -DDFP_BUILD_BENCHMARKS=ON -DDFP_BENCHMARKS_SYNTAX_ONLY=ON) ;;
   *) echo "usage: scripts/test.sh [--all]" >&2; exit 2 ;;
 esac
 

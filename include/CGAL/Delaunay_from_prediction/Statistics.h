@@ -87,6 +87,11 @@ enum class Outcome {
   graph_too_many_components, ///< the graph has too many components to guide the insertion
   tree_walks_missing, ///< the walks along the spanning tree kept missing
   graph_edges_too_long, ///< the graph's edges are far longer than the spacing of the points
+  // Periodic domains (periodic_2.h).
+  faces_do_not_close, ///< a face's edges, each taken as its shortest periodic image, do not close, or two faces do not fit along their edge
+  faces_do_not_tile_domain, ///< the faces do not cover the periodic domain exactly once
+  point_without_face, ///< a point is a vertex of no face
+  not_1_sheeted, ///< the points may be too few or too clustered for a 1-sheeted periodic covering: built as CGAL builds them
   count_ ///< the number of outcomes (not an outcome)
 };
 
@@ -141,6 +146,10 @@ inline const char* to_string(Outcome outcome)
       "the graph has too many components to guide the insertion",
       "the walks along the spanning tree kept missing",
       "the graph's edges are far longer than the spacing of the points",
+      "a face's edges, each taken as its shortest periodic image, do not close, or two faces do not fit along their edge",
+      "the faces do not cover the periodic domain exactly once",
+      "a point is a vertex of no face",
+      "the points may be too few or too clustered for a 1-sheeted periodic covering: built as CGAL builds them",
   };
   static_assert(sizeof(sentences) / sizeof(sentences[0]) == std::size_t(Outcome::count_), "one sentence per outcome");
   const std::size_t i = std::size_t(outcome);
