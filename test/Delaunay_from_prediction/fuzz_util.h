@@ -34,11 +34,11 @@ using Tri = std::array<long long, 3>; // a face; an edge has [2] == -1
 using Tris = std::vector<Tri>;
 
 enum Entry {
-  E_DFP, E_MD, E_EDGES, E_SG, E_EMST, E_RNG, E_GABRIEL, E_IMPRECISE, E_SPLIT, E_BRIO, E_MALFORMED, E_COUNT
+  E_DFP, E_MD, E_EDGES, E_SG, E_EMST, E_RNG, E_GABRIEL, E_IMPRECISE, E_SPLIT, E_BRIO, E_MALFORMED, E_PERIODIC, E_COUNT
 };
 inline const char* const entry_names[E_COUNT] = {"dfp",   "make_delaunay", "predicted_edges", "spanning_graph",
                                                  "emst",  "rng",           "gabriel",         "imprecise",
-                                                 "split", "brio_dc",       "malformed"};
+                                                 "split", "brio_dc",       "malformed",       "periodic"};
 enum Kernel { K_EPICK, K_EPECK, K_SC, K_COUNT };
 inline const char* const kernel_names[K_COUNT] = {"epick", "epeck", "sc"};
 enum Output { O_INFO, O_PLAIN, O_HIER, O_COUNT };

@@ -6,7 +6,9 @@
 // named parameters x, for make_delaunay and the prediction entry points, the concurrency tag
 // (Sequential_tag or Parallel_if_available_tag, with blocks of a few points for the region-parallel
 // build from scratch), Kinetic_Delaunay_triangulation_2 on every make_delaunay case, each result compared with CGAL's Delaunay_triangulation_2 built from
-// scratch with the same kernel (as index triples, vertex sets and info), plus the consistency of
+// scratch with the same kernel (as index triples, vertex sets and info); the periodic entry
+// points (periodic_2.h, each point family in a square domain around it) against CGAL's
+// Periodic_2_Delaunay_triangulation_2 (faces as (index, offset) triples, covering); plus the consistency of
 // the Statistics, is_valid(), and "malformed input throws Invalid_prediction and changes
 // nothing". Seeded and budgeted; cases run in forked children so that a crash or a hang is
 // reported with its seed and case number; every new failure is minimized (points and faces
@@ -27,12 +29,17 @@
 #include <CGAL/Delaunay_from_prediction/Kinetic_Delaunay_triangulation_2.h>
 #include <CGAL/Delaunay_from_prediction/brio_dc.h>
 #include <CGAL/Delaunay_from_prediction/imprecise_points.h>
+#include <CGAL/Delaunay_from_prediction/periodic_2.h>
 #include <CGAL/Delaunay_from_prediction/prediction_models.h>
 #include <CGAL/Delaunay_from_prediction/proximity_graphs.h>
 #include <CGAL/Delaunay_from_prediction/spanning_graph.h>
 #include <CGAL/Delaunay_from_prediction/split.h>
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Periodic_2_Delaunay_triangulation_2.h>
+#include <CGAL/Periodic_2_Delaunay_triangulation_traits_2.h>
+#include <CGAL/Periodic_2_triangulation_face_base_2.h>
+#include <CGAL/Periodic_2_triangulation_vertex_base_2.h>
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Triangulation_hierarchy_2.h>
 #include <CGAL/Triangulation_hierarchy_vertex_base_2.h>
@@ -60,6 +67,109 @@ using Hier_tds = CGAL::Triangulation_data_structure_2<
     CGAL::Triangulation_face_base_2<K>>;
 template <class K>
 using DT_hier = CGAL::Triangulation_hierarchy_2<CGAL::Delaunay_triangulation_2<K, Hier_tds<K>>>;
+
+// Periodic cases: CGAL's periodic triangulation, vertices with the point index.
+template <class K>
+using Periodic_traits = CGAL::Periodic_2_Delaunay_triangulation_traits_2<K>;
+template <class K>
+using Periodic_DT = CGAL::Periodic_2_Delaunay_triangulation_2<
+    Periodic_traits<K>,
+    CGAL::Triangulation_data_structure_2<
+        CGAL::Triangulation_vertex_base_with_info_2<std::size_t, Periodic_traits<K>,
+                                                    CGAL::Periodic_2_triangulation_vertex_base_2<Periodic_traits<K>>>,
+        CGAL::Periodic_2_triangulation_face_base_2<Periodic_traits<K>>>>;
+
+// The square domain [xmin, xmin + width) x [ymin, ymin + width) of a periodic case, a function
+// of its points: width twice the least power of two above their spread, the corners multiples
+// of half of it, so that both sides are exactly `width` long in doubles. False when no such
+// square of doubles holds the points (coordinates too far apart in magnitude): then the case
+// is skipped.
+struct Periodic_domain
+{
+  double xmin = 0, ymin = 0, width = 1;
+};
+
+inline bool periodic_domain_of(const XYs& xy, Periodic_domain& d)
+{
+  if(xy.empty())
+    return true;
+  double xlo = xy[0].x, xhi = xlo, ylo = xy[0].y, yhi = ylo;
+  for(const XY& p : xy) {
+    xlo = std::min(xlo, p.x), xhi = std::max(xhi, p.x);
+    ylo = std::min(ylo, p.y), yhi = std::max(yhi, p.y);
+  }
+  const double spread = std::max({xhi - xlo, yhi - ylo, std::abs(xlo) * 0x1p-40, std::abs(ylo) * 0x1p-40, 0x1p-1000});
+  if(!std::isfinite(spread))
+    return false;
+  const double half = std::ldexp(1.0, std::ilogb(spread) + 1); // > spread, a power of two
+  d.width = 2 * half;
+  d.xmin = std::floor(xlo / half) * half;
+  d.ymin = std::floor(ylo / half) * half;
+  const double xmax = d.xmin + d.width, ymax = d.ymin + d.width;
+  return std::isfinite(d.width) && std::isfinite(xmax) && std::isfinite(ymax) && xmax - d.xmin == d.width &&
+         ymax - d.ymin == d.width && xhi < xmax && yhi < ymax && d.xmin <= xlo && d.ymin <= ylo;
+}
+
+// The points without repeats (the first of equal points kept), in order.
+inline XYs dedupe(const XYs& xy)
+{
+  XYs out;
+  std::set<std::pair<double, double>> seen;
+  for(const XY& p : xy)
+    if(seen.insert({p.x, p.y}).second)
+      out.push_back(p);
+  return out;
+}
+
+// Whether CGAL's periodic triangulation with Epick (double) can decide the covering for this
+// period: the package refuses the others (periodic_2.h, check_domain_width()).
+inline bool double_period_fits(const Periodic_domain& d)
+{
+  return d.width >= std::ldexp(1.0, -500) && d.width <= std::ldexp(1.0, 500);
+}
+
+// x wrapped into [low, low + width).
+inline double wrap_into(double x, double low, double width)
+{
+  double y = x - width * std::floor((x - low) / width);
+  if(!(y < low + width))
+    y = low;
+  return y < low ? low : y;
+}
+
+inline XYs wrapped_into(XYs xy, const Periodic_domain& d)
+{
+  for(XY& p : xy)
+    p = {wrap_into(p.x, d.xmin, d.width), wrap_into(p.y, d.ymin, d.width)};
+  return xy;
+}
+
+// The faces of a periodic triangulation as (point index, offset) corners (the smallest index of
+// equal points; offsets of least value 0; rotated to the least corner), sorted.
+using Periodic_corners = std::array<std::tuple<std::size_t, int, int>, 3>;
+template <class P2DT2>
+std::vector<Periodic_corners> periodic_faces_of(const P2DT2& t, const XYs& xy, bool& found_all)
+{
+  std::map<std::pair<double, double>, std::size_t> index;
+  for(std::size_t i = xy.size(); i-- > 0;)
+    index[{xy[i].x, xy[i].y}] = i;
+  std::vector<Periodic_corners> faces;
+  found_all = true;
+  for(auto it = t.periodic_triangles_begin(P2DT2::UNIQUE); it != t.periodic_triangles_end(P2DT2::UNIQUE); ++it) {
+    const int low_x = std::min({(*it)[0].second.x(), (*it)[1].second.x(), (*it)[2].second.x()});
+    const int low_y = std::min({(*it)[0].second.y(), (*it)[1].second.y(), (*it)[2].second.y()});
+    Periodic_corners f;
+    for(int k = 0; k < 3; ++k) {
+      const auto at = index.find({CGAL::to_double((*it)[k].first.x()), CGAL::to_double((*it)[k].first.y())});
+      found_all = found_all && at != index.end();
+      f[k] = {at == index.end() ? 0 : at->second, (*it)[k].second.x() - low_x, (*it)[k].second.y() - low_y};
+    }
+    std::rotate(f.begin(), std::min_element(f.begin(), f.end()), f.end());
+    faces.push_back(f);
+  }
+  std::sort(faces.begin(), faces.end());
+  return faces;
+}
 
 struct Options
 {
@@ -371,30 +481,22 @@ static Tris gen_graph(int family, const XYs& xy, CGAL::Random& rng)
   return e;
 }
 
-static XYs dedupe(const XYs& xy)
-{
-  XYs out;
-  std::set<std::pair<double, double>> seen;
-  for(const XY& p : xy)
-    if(seen.insert({p.x, p.y}).second)
-      out.push_back(p);
-  return out;
-}
-
 static Case gen_case(unsigned long long seed, long long k)
 {
   CGAL::Random rng(unsigned(splitmix(splitmix(seed) ^ std::uint64_t(k)) & 0x7fffffff));
   Case c;
-  c.entry = pick(rng, {30, 14, 6, 8, 3, 3, 3, 7, 6, 8, 6});
+  c.entry = pick(rng, {30, 14, 6, 8, 3, 3, 3, 7, 6, 8, 6, 10});
   if(opt.family >= 0)
     c.entry = opt.family;
   c.kernel = pick(rng, {65, 20, 15});
   if(opt.kernel >= 0)
     c.kernel = opt.kernel;
   c.point_family = pick(rng, {20, 8, 10, 6, 3, 3, 3, 8, 5, 4, 4, 4, 6});
+  if(c.entry == E_PERIODIC && c.kernel == K_SC)
+    c.kernel = K_EPICK; // the periodic overloads need exact predicates
   std::size_t n = draw_size(rng);
   if(c.kernel == K_EPECK)
-    n = std::min<std::size_t>(n, 150);
+    n = std::min<std::size_t>(n, c.entry == E_PERIODIC ? 40 : 150); // CGAL's periodic build with Epeck is slow
   if(c.entry == E_EMST || c.entry == E_RNG || c.entry == E_GABRIEL)
     n = std::min<std::size_t>(n, 40);
   c.pts = gen_points(c.point_family, n, rng);
@@ -539,6 +641,63 @@ static Case gen_case(unsigned long long seed, long long k)
     c.split_method = rng.get_int(-1, 3);
     if(rng.get_bool())
       c.param_seed = unsigned(rng.get_int(1, 1 << 30));
+    break;
+  }
+  case E_PERIODIC: {
+    // The points in their square domain; moved points (make_delaunay, the kinetic class) and a
+    // prediction (delaunay_from_prediction) made with CGAL's periodic triangulation (Epick).
+    Periodic_domain d;
+    if(!periodic_domain_of(c.pts, d))
+      break; // skipped when run
+    c.parallel = rng.get_bool();
+    c.output = rng.get_int(0, 4); // the moves: none, little, a lot, one onto another
+    c.pts2 = c.pts;
+    const double spacing = d.width / std::sqrt(double(n + 1));
+    if(c.output == 1)
+      c.pts2 = dfp_test::jittered(c.pts, spacing * rng.get_double(0.001, 0.5), rng);
+    else if(c.output == 2) {
+      for(XY& p : c.pts2)
+        if(rng.get_bool())
+          p = {p.x + rng.get_double(-d.width, d.width), p.y + rng.get_double(-d.width, d.width)};
+    } else if(c.output == 3 && n >= 2)
+      c.pts2[std::size_t(rng.get_int(0, int(n)))] = c.pts2[std::size_t(rng.get_int(0, int(n)))];
+    c.pts2 = wrapped_into(c.pts2, d);
+    c.pred_family = pick(rng, {25, 10, 10, 10, 0, 15, 0, 0, 10, 20});
+    const XYs& of = c.pred_family == F_MOVED ? c.pts2 : c.pts;
+    Periodic_DT<Epick> t(Periodic_DT<Epick>::Iso_rectangle(d.xmin, d.ymin, d.xmin + d.width, d.ymin + d.width));
+    const auto P = dfp_test::to_points<Epick>(of);
+    if(double_period_fits(d))
+      t.insert(P.begin(), P.end());
+    else if(c.pred_family != F_EMPTY)
+      c.pred_family = F_GARBAGE; // CGAL's triangulation in double cannot be built: no faces from it
+    bool found_all = true;
+    c.faces.clear();
+    if(c.pred_family != F_EMPTY && c.pred_family != F_GARBAGE)
+      for(const Periodic_corners& f : periodic_faces_of(t, of, found_all)) {
+        Tri face{(long long)std::get<0>(f[0]), (long long)std::get<0>(f[1]), (long long)std::get<0>(f[2])};
+        if(face[0] == face[1] || face[1] == face[2] || face[2] == face[0])
+          continue; // a 9-sheeted covering's face through two copies of a point
+        if(rng.get_bool())
+          std::swap(face[1], face[2]);
+        if(c.pred_family == F_DELETED && rng.get_int(0, 6) == 0)
+          continue;
+        c.faces.push_back(face);
+        if(c.pred_family == F_DUPLICATED && rng.get_int(0, 8) == 0)
+          c.faces.push_back(face);
+      }
+    if(c.pred_family == F_GARBAGE && n >= 3)
+      for(std::size_t k = 0; k < 2 * n; ++k) {
+        const long long a = rng.get_int(0, int(n)), b = (a + 1 + rng.get_int(0, int(n) - 1)) % (long long)n;
+        const long long e = (b + 1 + rng.get_int(0, int(n) - 1)) % (long long)n;
+        if(e != a && e != b)
+          c.faces.push_back({a, b, e});
+      }
+    for(std::size_t k = c.faces.size(); k > 1; --k) // shuffled
+      std::swap(c.faces[k - 1], c.faces[std::size_t(rng.get_int(0, int(k)))]);
+    if(rng.get_int(0, 4) == 0)
+      c.strategy = rng.get_bool() ? int(DFP::Strategy::rebuild) : int(DFP::Strategy::flips);
+    if(rng.get_int(0, 8) == 0)
+      c.max_flips = rng.get_bool() ? 0 : rng.get_int(1, 6);
     break;
   }
   case E_BRIO:
@@ -936,6 +1095,150 @@ void run_kinetic(Checker& ck, const Case& c)
   }
 }
 
+// Periodic cases: delaunay_from_prediction() of the points with the case's faces, make_delaunay()
+// after moving CGAL's triangulation of the distinct points to the moved ones (refused when two
+// meet), and Kinetic_Delaunay_triangulation_2 there and back; each result equal to CGAL's
+// periodic range insertion (faces as (index, offset) corners, covering), is_valid(), every
+// vertex's info() its point's smallest index.
+template <class K>
+void run_periodic(Checker& ck, const Case& c)
+{
+  using P2DT2 = Periodic_DT<K>;
+  Periodic_domain d;
+  if(!periodic_domain_of(c.pts, d))
+    return;
+  const typename P2DT2::Iso_rectangle domain(d.xmin, d.ymin, d.xmin + d.width, d.ymin + d.width);
+  const XYs pts2 = wrapped_into(c.pts2.size() == c.pts.size() ? c.pts2 : c.pts, d);
+  if(std::is_same<K, Epick>::value && !double_period_fits(d)) { // refused by every entry point
+    auto refuses = [&](const char* what, const auto& call) {
+      try {
+        call();
+        ck.fail(std::string("periodic:") + what + ":period_not_refused", "no Invalid_prediction");
+      } catch(const DFP::Invalid_prediction&) {
+      } catch(const std::exception& e) {
+        ck.fail(std::string("periodic:") + what + ":wrong_exception", e.what());
+      }
+    };
+    P2DT2 t(domain);
+    refuses("delaunay_from_prediction", [&] { DFP::delaunay_from_prediction(points_of<K>(c.pts), c.faces, t); });
+    DFP::Kinetic_Delaunay_triangulation_2<P2DT2> kinetic{P2DT2(domain)};
+    if(!c.pts.empty())
+      refuses("kinetic", [&] { kinetic.build(points_of<K>(c.pts)); });
+    return;
+  }
+  auto reference = [&](const XYs& xy) {
+    P2DT2 r(domain);
+    const auto P = points_of<K>(xy);
+    r.insert(P.begin(), P.end());
+    bool found = true;
+    return std::make_pair(periodic_faces_of(r, xy, found), r.is_1_cover());
+  };
+  auto check = [&](const P2DT2& t, const XYs& xy, const char* what, bool check_info) {
+    if(!ck.failure.empty())
+      return;
+    if(!t.is_valid()) {
+      ck.fail(std::string("periodic:") + what + ":is_valid", "is_valid() is false");
+      return;
+    }
+    bool found = true;
+    const auto got = std::make_pair(periodic_faces_of(t, xy, found), t.is_1_cover());
+    if(!found)
+      ck.fail(std::string("periodic:") + what + ":vertex_not_a_point", "a vertex is at none of the points");
+    else if(got != reference(xy))
+      ck.fail(std::string("periodic:") + what + ":faces", got.second ? "faces differ from CGAL's" : "faces or covering differ");
+    std::map<std::pair<double, double>, std::size_t> index;
+    for(std::size_t i = xy.size(); i-- > 0;)
+      index[{xy[i].x, xy[i].y}] = i;
+    if(check_info && ck.failure.empty())
+      for(auto v = t.tds().vertices().begin(); v != t.tds().vertices().end(); ++v)
+        if(index[{CGAL::to_double(v->point().x()), CGAL::to_double(v->point().y())}] != v->info()) {
+          ck.fail(std::string("periodic:") + what + ":info", "a vertex's info() is not its point's smallest index");
+          break;
+        }
+  };
+  // f(the case's named parameters, those it gives only), f(tag, np) for both tags.
+  auto with_parameters = [&](auto f) {
+    auto call = [&](const auto& np) {
+      return c.parallel ? f(CGAL::Parallel_if_available_tag(), np) : f(CGAL::Sequential_tag(), np);
+    };
+    const std::size_t flips = std::size_t(c.max_flips);
+    const DFP::Strategy strategy = DFP::Strategy(c.strategy);
+    if(c.max_flips >= 0 && c.strategy >= 0)
+      return call(DFP::parameters::max_flips(flips).strategy(strategy));
+    if(c.max_flips >= 0)
+      return call(DFP::parameters::max_flips(flips));
+    if(c.strategy >= 0)
+      return call(DFP::parameters::strategy(strategy));
+    return call(DFP::parameters::default_values());
+  };
+  // delaunay_from_prediction()
+  const auto P = points_of<K>(c.pts);
+  std::vector<std::array<long long, 3>> faces;
+  for(const Tri& f : c.faces)
+    faces.push_back({f[0], f[1], f[2]});
+  P2DT2 t(domain);
+  expect_no_throw(ck, [&] {
+    with_parameters([&](auto tag, const auto& np) {
+      return DFP::delaunay_from_prediction<decltype(tag)>(P, faces, t, np);
+    });
+  });
+  check(t, c.pts, "delaunay_from_prediction", true);
+  // make_delaunay() on CGAL's triangulation of the distinct points, moved.
+  const XYs distinct = dedupe(c.pts);
+  std::map<std::pair<double, double>, std::size_t> first_at;
+  for(std::size_t i = 0; i < c.pts.size(); ++i)
+    first_at.emplace(std::make_pair(c.pts[i].x, c.pts[i].y), i);
+  XYs before, after;
+  for(const XY& p : distinct) {
+    before.push_back(p);
+    after.push_back(pts2[first_at[{p.x, p.y}]]);
+  }
+  const bool meet = dedupe(after).size() != after.size();
+  {
+    P2DT2 m(domain);
+    const auto B = points_of<K>(before);
+    m.insert(B.begin(), B.end());
+    std::map<std::pair<double, double>, std::size_t> rank; // in `before`, distinct points
+    for(std::size_t k = 0; k < before.size(); ++k)
+      rank[{before[k].x, before[k].y}] = k;
+    const auto A = points_of<K>(after);
+    for(auto v = m.tds().vertices().begin(); v != m.tds().vertices().end(); ++v) { // every copy
+      const std::size_t k = rank[{CGAL::to_double(v->point().x()), CGAL::to_double(v->point().y())}];
+      v->set_point(A[k]);
+      v->info() = k;
+    }
+    bool threw = false;
+    try {
+      with_parameters([&](auto tag, const auto& np) { return DFP::make_delaunay<decltype(tag)>(m, np); });
+    } catch(const DFP::Invalid_prediction&) {
+      threw = true;
+    } catch(const std::exception& e) {
+      ck.fail(std::string("periodic:make_delaunay:threw:") + typeid(e).name(), e.what());
+    }
+    if(ck.failure.empty() && threw != meet)
+      ck.fail("periodic:make_delaunay:refusal", meet ? "two vertices at one point were accepted" : "threw on distinct points");
+    if(!meet)
+      check(m, after, "make_delaunay", true);
+  }
+  // Kinetic_Delaunay_triangulation_2: to the moved points and back.
+  DFP::Kinetic_Delaunay_triangulation_2<P2DT2> kinetic{P2DT2(domain)};
+  expect_no_throw(ck, [&] { kinetic.build(P); });
+  for(const XYs* xy : {&pts2, &c.pts}) {
+    if(!ck.failure.empty())
+      return;
+    expect_no_throw(ck, [&] {
+      if(c.parallel)
+        kinetic.template move<CGAL::Parallel_if_available_tag>(points_of<K>(*xy));
+      else
+        kinetic.move(points_of<K>(*xy));
+    });
+    check(kinetic.triangulation(), *xy, "kinetic", true);
+    for(std::size_t i = 0; i < xy->size() && ck.failure.empty(); ++i)
+      if(CGAL::to_double(kinetic.point(i).x()) != (*xy)[i].x || CGAL::to_double(kinetic.point(i).y()) != (*xy)[i].y)
+        ck.fail("periodic:kinetic:point_not_at_its_vertex", "point " + std::to_string(i));
+  }
+}
+
 // Brute-force proximity graphs (exact predicates), on representatives (smallest index).
 template <class K>
 void run_proximity(Checker& ck, const Case& c)
@@ -1270,6 +1573,12 @@ std::string run_kernel(const Case& c)
         run_brio<dfp_test::DT_plain<K>, K>(ck, c, exact);
       else
         run_brio<dfp_test::DT_with_info<K>, K>(ck, c, exact);
+      break;
+    case E_PERIODIC:
+      if constexpr(std::is_same<K, SC>::value)
+        run_periodic<Epick>(ck, c); // needs exact predicates (gen_case draws Epick)
+      else
+        run_periodic<K>(ck, c);
       break;
     default: run_malformed<K>(ck, c); break;
     }

@@ -6,7 +6,9 @@
 // prediction of their Delaunay triangulation from files, computes the triangulation with
 // delaunay_from_prediction() and writes it; `dfp kinetic` keeps one triangulation through a
 // sequence of point frames with Kinetic_Delaunay_triangulation_2 (make_delaunay() in place, a
-// rebuild when points merge or split). `dfp --help` tells the rest.
+// rebuild when points merge or split). With `--periodic XMIN YMIN XMAX YMAX` both work on the
+// flat torus (CGAL's Periodic_2_Delaunay_triangulation_2, periodic_2.h) and write each triangle
+// with its corners' offsets. `dfp --help` tells the rest.
 //
 // Exit status: 0 on success, 1 for an input or output error (the message names the file and
 // the line), 2 for a wrong command line, 3 when --check finds a difference with CGAL's build.
@@ -15,9 +17,14 @@
 #include <CGAL/Delaunay_from_prediction/Kinetic_Delaunay_triangulation_2.h>
 #include <CGAL/Delaunay_from_prediction/file_io.h>
 #include <CGAL/Delaunay_from_prediction_2.h>
+#include <CGAL/Delaunay_from_prediction/periodic_2.h>
 
 #include <CGAL/Delaunay_triangulation_2.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Periodic_2_Delaunay_triangulation_2.h>
+#include <CGAL/Periodic_2_Delaunay_triangulation_traits_2.h>
+#include <CGAL/Periodic_2_triangulation_face_base_2.h>
+#include <CGAL/Periodic_2_triangulation_vertex_base_2.h>
 #include <CGAL/Triangulation_data_structure_2.h>
 #include <CGAL/Triangulation_vertex_base_with_info_2.h>
 
@@ -33,6 +40,7 @@
 #include <algorithm>
 #include <array>
 #include <chrono>
+#include <cmath>
 #include <cstddef>
 #include <cstdio>
 #include <cstdlib>
@@ -45,6 +53,7 @@
 #include <new>
 #include <sstream>
 #include <string>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -55,6 +64,12 @@ using Point = K::Point_2;
 using Vb = CGAL::Triangulation_vertex_base_with_info_2<std::size_t, K>;
 using Tds = CGAL::Triangulation_data_structure_2<Vb>;
 using DT = CGAL::Delaunay_triangulation_2<K, Tds>;
+// --periodic: CGAL's periodic Delaunay triangulation, vertices with the point index as info().
+using Periodic_traits = CGAL::Periodic_2_Delaunay_triangulation_traits_2<K>;
+using Periodic_vb = CGAL::Triangulation_vertex_base_with_info_2<std::size_t, Periodic_traits,
+                                                                CGAL::Periodic_2_triangulation_vertex_base_2<Periodic_traits>>;
+using Periodic_fb = CGAL::Periodic_2_triangulation_face_base_2<Periodic_traits>;
+using Periodic_DT = CGAL::Periodic_2_Delaunay_triangulation_2<Periodic_traits, CGAL::Triangulation_data_structure_2<Periodic_vb, Periodic_fb>>;
 namespace DFP = CGAL::Delaunay_from_prediction;
 namespace IO = CGAL::Delaunay_from_prediction::IO;
 
@@ -91,6 +106,12 @@ const char* const usage_text =
     "                     manual\n"
     "  --cgal             ignore the prediction and build with CGAL's Delaunay_triangulation_2\n"
     "                     (range insertion), for comparisons; kinetic: every frame so\n"
+    "  --periodic XMIN YMIN XMAX YMAX\n"
+    "                     triangulate on the flat torus [XMIN, XMAX) x [YMIN, YMAX) (a square:\n"
+    "                     CGAL's Periodic_2_Delaunay_triangulation_2), every point inside it;\n"
+    "                     FACES are index triples, OUT a .ele file whose triangles carry six\n"
+    "                     attributes, each corner's offset in periods (x, y); --check and --cgal\n"
+    "                     use CGAL's periodic triangulation\n"
     "  --quiet            no progress lines on stderr (printed for files over 64 MiB)\n";
 
 struct Usage_error
@@ -110,7 +131,18 @@ struct Options
   bool quiet = false;
   long threads = 1;
   DFP::Strategy strategy = DFP::Strategy::automatic;
+  bool periodic = false;
+  std::array<double, 4> domain = {0, 0, 1, 1}; // --periodic XMIN YMIN XMAX YMAX
 };
+
+double number_named(const std::string& option, const std::string& value)
+{
+  char* end = nullptr;
+  const double x = std::strtod(value.c_str(), &end);
+  if(value.empty() || *end != '\0' || !std::isfinite(x))
+    throw Usage_error{option + " needs finite numbers, not '" + value + "'"};
+  return x;
+}
 
 DFP::Strategy strategy_named(const std::string& name)
 {
@@ -155,6 +187,11 @@ Options parse_command_line(int argc, char** argv)
       o.quiet = true;
     else if(a == "--strategy")
       o.strategy = strategy_named(value());
+    else if(a == "--periodic") {
+      o.periodic = true;
+      for(double& bound : o.domain)
+        bound = number_named(a, value());
+    }
     else if(a == "--threads") {
       const std::string v = value();
       char* end = nullptr;
@@ -173,6 +210,18 @@ Options parse_command_line(int argc, char** argv)
       throw Usage_error{"triangulate needs -o OUT"};
   } else if(o.inputs.empty())
     throw Usage_error{"kinetic needs at least one FRAME file"};
+  if(o.periodic) {
+    const double width = o.domain[2] - o.domain[0], height = o.domain[3] - o.domain[1];
+    if(!(width > 0) || !(height > 0) || !std::isfinite(width) || !std::isfinite(height))
+      throw Usage_error{"--periodic XMIN YMIN XMAX YMAX needs XMIN < XMAX and YMIN < YMAX"};
+    if(width != height)
+      throw Usage_error{"--periodic: the domain must be a square (XMAX - XMIN = YMAX - YMIN): CGAL's "
+                        "periodic triangulation has one period"};
+    if(!o.prediction.empty() && IO::file_format(o.prediction) == IO::File_format::edge)
+      throw Usage_error{"--periodic takes a prediction of faces (.ele or .off), not edges"};
+    if(!o.output.empty() && IO::file_format(o.output) != IO::File_format::ele)
+      throw Usage_error{"--periodic writes a .ele file (the offsets as attributes), not '" + o.output + "'"};
+  }
   if(!o.output.empty() && IO::file_format(o.output) == IO::File_format::node)
     throw Usage_error{"OUT is a .ele, .off or .edge file, not '" + o.output + "'"};
   if(!o.output.empty() && IO::file_format(o.output) == IO::File_format::xyz)
@@ -272,6 +321,62 @@ bool equals_cgal_build(const std::vector<Point>& points, const DT& dt)
   return geometry_of(dt) == geometry_of(reference);
 }
 
+// The periodic counterparts, for --periodic: CGAL's periodic build, the comparison as faces of
+// (point, offset) corners, and the .ele output with the offsets.
+void build_with_cgal(const std::vector<Point>& points, Periodic_DT& t)
+{
+  std::vector<std::pair<Point, std::size_t>> indexed;
+  indexed.reserve(points.size());
+  for(std::size_t i = 0; i < points.size(); ++i)
+    indexed.emplace_back(points[i], i);
+  t.clear();
+  t.insert(indexed.begin(), indexed.end());
+}
+
+// Each triangle as its corners (x, y, x offset, y offset), rotated to start at its least corner.
+using Periodic_corner = std::array<double, 4>;
+std::vector<std::array<Periodic_corner, 3>> geometry_of(const Periodic_DT& t)
+{
+  std::vector<std::array<Periodic_corner, 3>> faces;
+  for(auto it = t.periodic_triangles_begin(Periodic_DT::UNIQUE); it != t.periodic_triangles_end(Periodic_DT::UNIQUE); ++it) {
+    const int low_x = (std::min)({(*it)[0].second.x(), (*it)[1].second.x(), (*it)[2].second.x()});
+    const int low_y = (std::min)({(*it)[0].second.y(), (*it)[1].second.y(), (*it)[2].second.y()});
+    std::array<Periodic_corner, 3> f;
+    for(int k = 0; k < 3; ++k)
+      f[k] = {(*it)[k].first.x(), (*it)[k].first.y(), double((*it)[k].second.x() - low_x), double((*it)[k].second.y() - low_y)};
+    std::rotate(f.begin(), std::min_element(f.begin(), f.end()), f.end());
+    faces.push_back(f);
+  }
+  std::sort(faces.begin(), faces.end());
+  return faces;
+}
+
+bool equals_cgal_build(const std::vector<Point>& points, const Periodic_DT& t)
+{
+  Periodic_DT reference(t.domain());
+  build_with_cgal(points, reference);
+  return reference.is_1_cover() == t.is_1_cover() && geometry_of(t) == geometry_of(reference);
+}
+
+void write_triangulation(const std::string& file, const std::vector<Point>& points, const DT& dt, std::size_t first_index)
+{
+  IO::write_triangulation(file, points, dt, first_index);
+}
+
+void write_triangulation(const std::string& file, const std::vector<Point>&, const Periodic_DT& t, std::size_t first_index)
+{
+  IO::write_periodic_ele(file, DFP::indexed_periodic_triangles(t), first_index);
+}
+
+std::size_t number_of_triangles(const DT& dt) { return dt.dimension() == 2 ? dt.number_of_faces() : 0; }
+std::size_t number_of_triangles(const Periodic_DT& t) { return DFP::indexed_periodic_triangles(t).size(); }
+
+// What --check compares with, and what it found.
+const char* name_of(const DT&) { return "CGAL's Delaunay_triangulation_2"; }
+const char* name_of(const Periodic_DT&) { return "CGAL's Periodic_2_Delaunay_triangulation_2"; }
+const char* result_name(const DT&) { return "CGAL's Delaunay triangulation"; }
+const char* result_name(const Periodic_DT&) { return "CGAL's periodic Delaunay triangulation"; }
+
 // A visitor of the package's calls (DFP::parameters::visitor) that times their stages, for --stats.
 struct Stage_times
 {
@@ -281,12 +386,15 @@ struct Stage_times
   void stage_end(DFP::Stage stage) { seconds.emplace_back(stage, seconds_since(began)); }
 };
 
+template <class Triangulation>
 void print_statistics(const DFP::Statistics& s, double read_s, double triangulate_s, double write_s,
-                      const Stage_times& stages, const DT& dt, std::size_t n)
+                      const Stage_times& stages, const Triangulation& dt, std::size_t n)
 {
   std::cout << "points: " << n << "\nvertices: " << dt.number_of_vertices()
-            << "\ntriangles: " << (dt.dimension() == 2 ? dt.number_of_faces() : 0) << "\n"
-            << s << "time_read_s: " << read_s << "\ntime_triangulate_s: " << triangulate_s << "\n";
+            << "\ntriangles: " << number_of_triangles(dt) << "\n";
+  if constexpr(std::is_same_v<Triangulation, Periodic_DT>)
+    std::cout << "covering: " << (dt.is_1_cover() ? "1-sheeted" : "9-sheeted") << "\n";
+  std::cout << s << "time_read_s: " << read_s << "\ntime_triangulate_s: " << triangulate_s << "\n";
   for(const auto& stage : stages.seconds)
     std::cout << "time_stage_" << DFP::to_string(stage.first) << "_s: " << stage.second << "\n";
   std::cout << "time_write_s: " << write_s << "\n";
@@ -311,8 +419,8 @@ std::string frame_file(const std::string& pattern, std::size_t frame)
   return pattern.substr(0, at) + std::to_string(frame) + pattern.substr(at + 2);
 }
 
-template <class Tag>
-DFP::Statistics triangulate(const std::vector<Point>& points, const Prediction& prediction, DT& dt,
+template <class Tag, class Triangulation>
+DFP::Statistics triangulate(const std::vector<Point>& points, const Prediction& prediction, Triangulation& dt,
                             const Options& o, Stage_times& stages)
 {
   if(o.cgal) {
@@ -324,13 +432,14 @@ DFP::Statistics triangulate(const std::vector<Point>& points, const Prediction& 
     return s;
   }
   const auto np = DFP::parameters::strategy(o.strategy).visitor(std::ref(stages));
-  if(prediction.has_edges)
-    return DFP::delaunay_from_predicted_edges<Tag>(points, prediction.edges, dt, np);
+  if constexpr(std::is_same_v<Triangulation, DT>) // --periodic takes no edges (parse_command_line)
+    if(prediction.has_edges)
+      return DFP::delaunay_from_predicted_edges<Tag>(points, prediction.edges, dt, np);
   return DFP::delaunay_from_prediction<Tag>(points, prediction.faces, dt, np);
 }
 
-template <class Tag>
-int run_triangulate(const Options& o)
+template <class Tag, class Triangulation>
+int run_triangulate(const Options& o, Triangulation dt)
 {
   Progress progress;
   progress.on = !o.quiet && file_size(o.inputs[0]) > (64ll << 20);
@@ -345,14 +454,13 @@ int run_triangulate(const Options& o)
 
   progress.say("triangulating " + std::to_string(points.size()) + " points");
   const auto built = std::chrono::steady_clock::now();
-  DT dt;
   Stage_times stages;
   const DFP::Statistics s = triangulate<Tag>(points, prediction, dt, o, stages);
   const double triangulate_s = seconds_since(built);
 
   progress.say("writing " + o.output);
   const auto written = std::chrono::steady_clock::now();
-  IO::write_triangulation(o.output, points, dt, first_index);
+  write_triangulation(o.output, points, dt, first_index);
   const double write_s = seconds_since(written);
   progress.say("done");
 
@@ -360,29 +468,28 @@ int run_triangulate(const Options& o)
     print_statistics(s, read_s, triangulate_s, write_s, stages, dt, points.size());
   if(o.check) {
     if(!equals_cgal_build(points, dt)) {
-      std::cerr << "dfp: --check: the result differs from CGAL's Delaunay_triangulation_2\n";
+      std::cerr << "dfp: --check: the result differs from " << name_of(dt) << "\n";
       return 3;
     }
-    std::cerr << "dfp: --check: the result is CGAL's Delaunay triangulation\n";
+    std::cerr << "dfp: --check: the result is " << result_name(dt) << "\n";
   }
   return 0;
 }
 
-template <class Tag>
-int run_kinetic(const Options& o)
+template <class Tag, class Triangulation>
+int run_kinetic(const Options& o, Triangulation built)
 {
   std::vector<Point> points;
   const std::size_t first_index = IO::read_points(o.inputs[0], points);
   const std::size_t n = points.size();
-  DT built;
   Stage_times stages;
   DFP::Statistics s = triangulate<Tag>(points, read_prediction(o.prediction, n), built, o, stages);
   // The package's kinetic triangulation moves the vertices frame by frame (in place, or
   // rebuilt when points merge or split); --cgal builds every frame with CGAL instead.
-  DFP::Kinetic_Delaunay_triangulation_2<DT> kinetic;
+  DFP::Kinetic_Delaunay_triangulation_2<Triangulation> kinetic(built);
   if(!o.cgal)
     kinetic.assign(built, points);
-  const DT& dt = o.cgal ? built : kinetic.triangulation();
+  const Triangulation& dt = o.cgal ? built : kinetic.triangulation();
 
   int status = 0;
   for(std::size_t frame = 0; frame < o.inputs.size(); ++frame) {
@@ -414,22 +521,30 @@ int run_kinetic(const Options& o)
                 << s.flips << " points_reinserted " << s.points_reinserted << (s.fell_back ? " fell_back" : "")
                 << stage_list(stages) << "\n";
     if(!o.output.empty() && (o.output.find("{}") != std::string::npos || frame + 1 == o.inputs.size()))
-      IO::write_triangulation(frame_file(o.output, frame), points, dt, first_index);
+      write_triangulation(frame_file(o.output, frame), points, dt, first_index);
     if(o.check && !equals_cgal_build(points, dt)) {
-      std::cerr << "dfp: --check: frame " << frame << " (" << o.inputs[frame]
-                << ") differs from CGAL's Delaunay_triangulation_2\n";
+      std::cerr << "dfp: --check: frame " << frame << " (" << o.inputs[frame] << ") differs from " << name_of(dt)
+                << "\n";
       status = 3;
     }
   }
   if(o.check && status == 0)
-    std::cerr << "dfp: --check: every frame is CGAL's Delaunay triangulation\n";
+    std::cerr << "dfp: --check: every frame is " << result_name(dt) << "\n";
   return status;
+}
+
+template <class Tag, class Triangulation>
+int run(const Options& o, Triangulation empty)
+{
+  return o.command == "triangulate" ? run_triangulate<Tag>(o, empty) : run_kinetic<Tag>(o, empty);
 }
 
 template <class Tag>
 int run(const Options& o)
 {
-  return o.command == "triangulate" ? run_triangulate<Tag>(o) : run_kinetic<Tag>(o);
+  if(o.periodic)
+    return run<Tag>(o, Periodic_DT(Periodic_DT::Iso_rectangle(o.domain[0], o.domain[1], o.domain[2], o.domain[3])));
+  return run<Tag>(o, DT());
 }
 
 // The first touch of a 4 KiB page costs a page fault, and a triangulation of 10^6 points

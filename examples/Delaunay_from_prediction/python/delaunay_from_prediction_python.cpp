@@ -9,6 +9,7 @@
 //   triangles, stats = dfp.delaunay_from_prediction(points, faces)  # (n,2) float64, (m,3) ints
 //   t = dfp.Triangulation(points); t.move(new_points); t.triangles
 //   d = dfp.Delaunay(points)    # a drop-in for scipy.spatial.Delaunay in 2D
+//   t = dfp.Triangulation(points, domain=(0, 0, 1, 1))  # periodic: t.triangles, t.offsets
 //
 // Inputs are read straight from the numpy buffers into C++ vectors (no Python object per
 // point), then the GIL is released for the C++ work; outputs are numpy arrays that take over
@@ -22,10 +23,15 @@
 #include <CGAL/Delaunay_from_prediction_2.h>
 #include <CGAL/Delaunay_from_prediction/Kinetic_Delaunay_triangulation_2.h>
 #include <CGAL/Delaunay_from_prediction/Statistics.h>
+#include <CGAL/Delaunay_from_prediction/periodic_2.h>
 #include <CGAL/Delaunay_from_prediction/proximity_graphs.h>
 
 #include <CGAL/Delaunay_triangulation_2.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Periodic_2_Delaunay_triangulation_2.h>
+#include <CGAL/Periodic_2_Delaunay_triangulation_traits_2.h>
+#include <CGAL/Periodic_2_triangulation_face_base_2.h>
+#include <CGAL/Periodic_2_triangulation_vertex_base_2.h>
 #include <CGAL/Spatial_sort_traits_adapter_2.h>
 #include <CGAL/Triangulation_data_structure_2.h>
 #include <CGAL/Triangulation_face_base_with_info_2.h>
@@ -41,11 +47,15 @@
 #include <cstdint>
 #include <iterator>
 #include <limits>
+#include <map>
 #include <memory>
 #include <mutex>
 #include <numeric>
+#include <optional>
 #include <sstream>
 #include <string>
+#include <tuple>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -64,6 +74,15 @@ using Vertex_handle = DT::Vertex_handle;
 using Face = std::array<std::int64_t, 3>;
 using Edge = std::array<std::int64_t, 2>;
 using Index_pairs = std::vector<std::pair<std::size_t, std::size_t>>;
+// domain=(xmin, ymin, xmax, ymax): CGAL's periodic Delaunay triangulation (the flat torus), the
+// same vertex and face infos.
+using Periodic_traits = CGAL::Periodic_2_Delaunay_triangulation_traits_2<K>;
+using Periodic_vb = CGAL::Triangulation_vertex_base_with_info_2<std::size_t, Periodic_traits,
+                                                                CGAL::Periodic_2_triangulation_vertex_base_2<Periodic_traits>>;
+using Periodic_fb = CGAL::Triangulation_face_base_with_info_2<int, Periodic_traits,
+                                                              CGAL::Periodic_2_triangulation_face_base_2<Periodic_traits>>;
+using Periodic_DT =
+    CGAL::Periodic_2_Delaunay_triangulation_2<Periodic_traits, CGAL::Triangulation_data_structure_2<Periodic_vb, Periodic_fb>>;
 
 // ---------------------------------------------------------------------------------------------
 // Reading the inputs
@@ -157,6 +176,24 @@ void check_finite(const std::vector<Point>& points)
           << points[i].y() << ")";
       throw DFP::Invalid_prediction(msg.str());
     }
+}
+
+// domain=None or (xmin, ymin, xmax, ymax), a square of finite numbers: the periodic domain.
+std::optional<std::array<double, 4>> read_domain(const py::object& obj)
+{
+  if(obj.is_none())
+    return std::nullopt;
+  const auto a = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(obj);
+  if(!a || a.ndim() != 1 || a.shape(0) != 4)
+    throw py::value_error("domain must be (xmin, ymin, xmax, ymax), four numbers");
+  const std::array<double, 4> d = {a.data()[0], a.data()[1], a.data()[2], a.data()[3]};
+  const double width = d[2] - d[0], height = d[3] - d[1];
+  if(!(width > 0) || !(height > 0) || !std::isfinite(width) || !std::isfinite(height))
+    throw py::value_error("domain=(xmin, ymin, xmax, ymax) needs finite numbers, xmin < xmax and ymin < ymax");
+  if(width != height)
+    throw py::value_error("domain must be a square (xmax - xmin == ymax - ymin): CGAL's periodic triangulation has "
+                          "one period");
+  return d;
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -296,11 +333,62 @@ std::vector<std::int64_t> cgal_delaunay(const std::vector<Point>& points)
 // C++ works, so two Python threads may call one object), with the finite faces numbered in
 // their info() for the scipy-style attributes: face k is simplex k, infinite faces -1.
 using Kinetic = DFP::Kinetic_Delaunay_triangulation_2<DT>;
+using Periodic_kinetic = DFP::Kinetic_Delaunay_triangulation_2<Periodic_DT>;
 
+// Numbers the triangles in their info(): finite faces 0, 1, ..., infinite ones -1.
+void number_faces(const DT& dt)
+{
+  std::int32_t k = 0;
+  for(auto f = dt.all_faces_begin(); f != dt.all_faces_end(); ++f)
+    f->info() = dt.is_infinite(f) ? -1 : k++;
+}
+
+// A periodic triangle as (point index, x offset, y offset) corners, offsets translated to least
+// value 0, rotated to its least corner: the same for every copy of it in a 9-sheeted covering.
+using Periodic_key = std::array<std::tuple<std::size_t, int, int>, 3>;
+Periodic_key key_of(const Periodic_DT& t, Periodic_DT::Face_handle f)
+{
+  const auto pt = t.periodic_triangle(f);
+  const int low_x = (std::min)({pt[0].second.x(), pt[1].second.x(), pt[2].second.x()});
+  const int low_y = (std::min)({pt[0].second.y(), pt[1].second.y(), pt[2].second.y()});
+  Periodic_key key;
+  for(int k = 0; k < 3; ++k)
+    key[k] = {t.get_original_vertex(f->vertex(k))->info(), pt[k].second.x() - low_x, pt[k].second.y() - low_y};
+  std::rotate(key.begin(), std::min_element(key.begin(), key.end()), key.end());
+  return key;
+}
+
+// Numbers the periodic triangles in the order of DFP::indexed_periodic_triangles() (CGAL's
+// UNIQUE order); the copies of a 9-sheeted covering get the number of their triangle.
+void number_faces(const Periodic_DT& t)
+{
+  std::int32_t k = 0;
+  for(auto f = t.faces_begin(); f != t.faces_end(); ++f)
+    f->info() = -1;
+  for(auto it = t.periodic_triangles_begin(Periodic_DT::UNIQUE); it != t.periodic_triangles_end(Periodic_DT::UNIQUE); ++it)
+    it.get_face()->info() = k++;
+  if(t.is_1_cover())
+    return;
+  std::map<Periodic_key, std::int32_t> number;
+  for(auto f = t.faces_begin(); f != t.faces_end(); ++f)
+    if(f->info() >= 0)
+      number.emplace(key_of(t, f), f->info());
+  for(auto f = t.faces_begin(); f != t.faces_end(); ++f)
+    if(f->info() < 0) {
+      const auto found = number.find(key_of(t, f));
+      f->info() = found == number.end() ? -1 : found->second;
+    }
+}
+
+template <class KineticTriangulation>
 class Kinetic_points
 {
 public:
-  Kinetic_points(const std::vector<Point>& points, const std::vector<Face>& faces, bool parallel)
+  using Triangulation = typename KineticTriangulation::Triangulation;
+
+  Kinetic_points(const std::vector<Point>& points, const std::vector<Face>& faces, bool parallel,
+                 const Triangulation& empty)
+      : kinetic_(empty)
   {
     stats_ = with_tag(parallel, [&](auto tag) { return kinetic_.template build<decltype(tag)>(points, faces); });
   }
@@ -326,22 +414,95 @@ public:
   {
     std::lock_guard<std::mutex> lock(mutex_);
     if(numbered && !faces_numbered_) {
-      std::int32_t k = 0;
-      for(auto fit = dt().all_faces_begin(); fit != dt().all_faces_end(); ++fit)
-        fit->info() = dt().is_infinite(fit) ? -1 : k++;
+      number_faces(kinetic_.triangulation());
       faces_numbered_ = true;
     }
     return f(kinetic_);
   }
 
 private:
-  const DT& dt() const { return kinetic_.triangulation(); }
-
-  Kinetic kinetic_;
+  KineticTriangulation kinetic_;
   DFP::Statistics stats_;
   mutable bool faces_numbered_ = false;
   mutable std::mutex mutex_;
 };
+
+// The triangulation of a Python object: in the plane, or on the torus of `domain`.
+class Core
+{
+public:
+  Core(const std::vector<Point>& points, const std::vector<Face>& faces, bool parallel,
+       const std::optional<std::array<double, 4>>& domain)
+      : domain_(domain)
+  {
+    if(domain)
+      torus_ = std::make_unique<Kinetic_points<Periodic_kinetic>>(
+          points, faces, parallel, Periodic_DT(Periodic_DT::Iso_rectangle((*domain)[0], (*domain)[1], (*domain)[2], (*domain)[3])));
+    else
+      plane_ = std::make_unique<Kinetic_points<Kinetic>>(points, faces, parallel, DT());
+  }
+
+  // f(the Kinetic_points held): f takes either.
+  template <class F>
+  decltype(auto) visit(F f) const
+  {
+    return torus_ ? f(*torus_) : f(*plane_);
+  }
+  template <class F>
+  decltype(auto) visit(F f)
+  {
+    return torus_ ? f(*torus_) : f(*plane_);
+  }
+  // f(the kinetic triangulation), under the lock, the faces numbered first when `numbered`.
+  template <class F>
+  auto read(F f, bool numbered = false) const
+  {
+    return visit([&](const auto& core) { return core.read(f, numbered); });
+  }
+
+  std::size_t number_of_points() const
+  {
+    return visit([](const auto& core) { return core.number_of_points(); });
+  }
+  const DFP::Statistics& build_statistics() const
+  {
+    return visit([](const auto& core) -> const DFP::Statistics& { return core.build_statistics(); });
+  }
+  std::pair<DFP::Statistics, bool> move(const std::vector<Point>& points, bool parallel)
+  {
+    return visit([&](auto& core) { return core.move(points, parallel); });
+  }
+  const std::optional<std::array<double, 4>>& domain() const { return domain_; }
+
+private:
+  std::optional<std::array<double, 4>> domain_;
+  std::unique_ptr<Kinetic_points<Kinetic>> plane_;
+  std::unique_ptr<Kinetic_points<Periodic_kinetic>> torus_;
+};
+
+py::object domain_tuple(const Core& core)
+{
+  if(!core.domain())
+    return py::none();
+  const auto& d = *core.domain();
+  return py::make_tuple(d[0], d[1], d[2], d[3]);
+}
+
+// The periodic triangles as point-index triples (k, 3) and each corner's offset in periods
+// (k, 3, 2, flattened), in the order of their numbers.
+std::pair<std::vector<std::int64_t>, std::vector<std::int64_t>> triangles_and_offsets(const Periodic_DT& t)
+{
+  std::pair<std::vector<std::int64_t>, std::vector<std::int64_t>> out;
+  for(const DFP::Indexed_periodic_triangle& triangle : DFP::indexed_periodic_triangles(t))
+    for(int k = 0; k < 3; ++k) {
+      out.first.push_back(std::int64_t(triangle.vertices[k]));
+      out.second.push_back(triangle.offsets[k][0]);
+      out.second.push_back(triangle.offsets[k][1]);
+    }
+  return out;
+}
+
+std::vector<std::int64_t> triangles_of(const Periodic_DT& t) { return triangles_and_offsets(t).first; }
 
 // ---------------------------------------------------------------------------------------------
 // scipy.spatial.Delaunay's attributes, read off the triangulation (dimension 2; below it there
@@ -376,6 +537,9 @@ Intc simplex_at(const DT& dt, Vertex_handle v)
   } while(++f != done);
   return -1;
 }
+
+// On the torus every face is a simplex (copies numbered as their triangle).
+Intc simplex_at(const Periodic_DT&, Periodic_DT::Vertex_handle v) { return v->face()->info(); }
 
 // simplices (k, 3), each counterclockwise, and neighbors (k, 3): neighbors[i][j] is the simplex
 // opposite simplices[i][j], -1 on the hull.
@@ -413,11 +577,22 @@ std::vector<Intc> convex_hull_edges(const DT& dt)
   return edges;
 }
 
+// The lists `around` packed as (indptr, indices): list k is indices[indptr[k]:indptr[k+1]].
+std::pair<std::vector<Intc>, std::vector<Intc>> as_csr(const std::vector<std::vector<Intc>>& around)
+{
+  std::vector<Intc> indptr(around.size() + 1, 0), indices;
+  for(std::size_t k = 0; k < around.size(); ++k)
+    indptr[k + 1] = indptr[k] + Intc(around[k].size());
+  indices.reserve(std::size_t(indptr.back()));
+  for(const auto& a : around)
+    indices.insert(indices.end(), a.begin(), a.end());
+  return {std::move(indptr), std::move(indices)};
+}
+
 // (indptr, indices): the neighbours of point k are indices[indptr[k]:indptr[k+1]], counter-
 // clockwise; none for a point that is not a vertex (a duplicate). Dimension 1 included.
 std::pair<std::vector<Intc>, std::vector<Intc>> vertex_neighbor_vertices(const DT& dt, std::size_t n)
 {
-  std::vector<Intc> indptr(n + 1, 0), indices;
   std::vector<std::vector<Intc>> around(n);
   if(dt.dimension() >= 1)
     for(auto v = dt.finite_vertices_begin(); v != dt.finite_vertices_end(); ++v) {
@@ -428,30 +603,27 @@ std::pair<std::vector<Intc>, std::vector<Intc>> vertex_neighbor_vertices(const D
           out.push_back(index_of(w));
       } while(++w != done);
     }
-  for(std::size_t k = 0; k < n; ++k)
-    indptr[k + 1] = indptr[k] + Intc(around[k].size());
-  indices.reserve(std::size_t(indptr[n]));
-  for(const auto& a : around)
-    indices.insert(indices.end(), a.begin(), a.end());
-  return {std::move(indptr), std::move(indices)};
+  return as_csr(around);
 }
 
 // coplanar (c, 3): the points that are no vertex (duplicates of a smaller index), each with a
 // simplex holding its vertex (-1 below dimension 2) and that vertex's point index.
-std::vector<Intc> coplanar_points(const Kinetic& k)
+template <class KineticTriangulation>
+std::vector<Intc> coplanar_points(const KineticTriangulation& k)
 {
   std::vector<Intc> rows;
   for(std::size_t i = 0; i < k.number_of_points(); ++i)
     if(k.vertex(i)->info() != i) {
       rows.push_back(Intc(i));
       rows.push_back(simplex_at(k.triangulation(), k.vertex(i)));
-      rows.push_back(index_of(k.vertex(i)));
+      rows.push_back(Intc(k.vertex(i)->info()));
     }
   return rows;
 }
 
 // vertex_to_simplex (n,): a simplex holding each point's vertex, -1 below dimension 2.
-std::vector<Intc> vertex_to_simplex(const Kinetic& k)
+template <class KineticTriangulation>
+std::vector<Intc> vertex_to_simplex(const KineticTriangulation& k)
 {
   std::vector<Intc> simplex(k.number_of_points());
   for(std::size_t i = 0; i < simplex.size(); ++i)
@@ -492,6 +664,81 @@ std::vector<Intc> find_simplices(const DT& dt, const std::vector<Point>& queries
   return found;
 }
 
+// The same attributes on the torus: every simplex has three neighbours, there is no hull.
+
+std::pair<std::vector<Intc>, std::vector<Intc>> simplices_and_neighbors_of(const Periodic_DT& t)
+{
+  std::vector<Intc> simplices, neighbors;
+  for(auto it = t.periodic_triangles_begin(Periodic_DT::UNIQUE); it != t.periodic_triangles_end(Periodic_DT::UNIQUE); ++it) {
+    const auto f = it.get_face();
+    for(int j = 0; j < 3; ++j) {
+      simplices.push_back(Intc(t.get_original_vertex(f->vertex(j))->info()));
+      neighbors.push_back(f->neighbor(j)->info());
+    }
+  }
+  return {std::move(simplices), std::move(neighbors)};
+}
+
+std::vector<Intc> convex_hull_edges(const Periodic_DT&) { return {}; }
+
+// The neighbours of each point, counterclockwise, one per edge at its vertex (in a 9-sheeted
+// covering a point may be its own neighbour, or another's twice, across different sides).
+std::pair<std::vector<Intc>, std::vector<Intc>> vertex_neighbor_vertices(const Periodic_DT& t, std::size_t n)
+{
+  std::vector<std::vector<Intc>> around(n);
+  for(auto v = t.unique_vertices_begin(); v != t.unique_vertices_end(); ++v) {
+    std::vector<Intc>& out = around[v->info()];
+    auto w = t.adjacent_vertices(v), done = w;
+    if(w != nullptr)
+      do
+        out.push_back(Intc(t.get_original_vertex(w)->info()));
+      while(++w != done);
+  }
+  return as_csr(around);
+}
+
+// `x` wrapped into [low, low + period) (a double computation; the side stays closed below).
+double wrap(double x, double low, double period)
+{
+  double y = x - period * std::floor((x - low) / period);
+  if(!(y < low + period))
+    y = low;
+  return y < low ? low : y;
+}
+
+// The simplex holding each query point, wrapped into the domain first (every point of the
+// plane is in some translate of a triangle); -1 for a non-finite query.
+std::vector<Intc> find_simplices(const Periodic_DT& t, const std::vector<Point>& queries)
+{
+  std::vector<Intc> found(queries.size(), -1);
+  const auto& d = t.domain();
+  const double period = d.xmax() - d.xmin();
+  std::vector<Point> wrapped;
+  std::vector<std::size_t> order;
+  wrapped.reserve(queries.size());
+  for(std::size_t i = 0; i < queries.size(); ++i) {
+    const bool finite = std::isfinite(queries[i].x()) && std::isfinite(queries[i].y());
+    wrapped.emplace_back(finite ? wrap(queries[i].x(), d.xmin(), period) : d.xmin(),
+                         finite ? wrap(queries[i].y(), d.ymin(), period) : d.ymin());
+    if(finite)
+      order.push_back(i);
+  }
+  if(t.number_of_vertices() == 0)
+    return found;
+  using Pmap = CGAL::Pointer_property_map<Point>::const_type;
+  using Traits = CGAL::Spatial_sort_traits_adapter_2<K, Pmap>;
+  const std::vector<Point>& sorted_by = wrapped;
+  CGAL::hilbert_sort(order.begin(), order.end(), Traits(CGAL::make_property_map(sorted_by)));
+  Periodic_DT::Face_handle hint;
+  for(const std::size_t i : order) {
+    Periodic_DT::Locate_type lt;
+    int li;
+    hint = t.locate(wrapped[i], lt, li, hint);
+    found[i] = hint->info();
+  }
+  return found;
+}
+
 // (n, 2) float64 array of the points.
 py::array_t<double> xy_array(const std::vector<Point>& points)
 {
@@ -505,9 +752,9 @@ py::array_t<double> xy_array(const std::vector<Point>& points)
 }
 
 // The current points, by index.
-py::array_t<double> coordinates(const Kinetic_points& core)
+py::array_t<double> coordinates(const Core& core)
 {
-  return xy_array(core.read([](const Kinetic& k) {
+  return xy_array(core.read([](const auto& k) {
     std::vector<Point> points;
     points.reserve(k.number_of_points());
     for(std::size_t i = 0; i < k.number_of_points(); ++i)
@@ -517,7 +764,7 @@ py::array_t<double> coordinates(const Kinetic_points& core)
 }
 
 // move(new_points) of both classes: the stats dict of the call, plus 'rebuilt'.
-py::dict move_points(Kinetic_points& core, const py::object& points_in, bool parallel)
+py::dict move_points(Core& core, const py::object& points_in, bool parallel)
 {
   const std::vector<Point> points = read_points(points_in, "new_points");
   if(points.size() != core.number_of_points())
@@ -536,32 +783,34 @@ py::dict move_points(Kinetic_points& core, const py::object& points_in, bool par
 // The Python class Triangulation.
 struct Triangulation
 {
-  Triangulation(const std::vector<Point>& points, const std::vector<Face>& faces, bool parallel)
-      : core(points, faces, parallel)
+  Triangulation(const std::vector<Point>& points, const std::vector<Face>& faces, bool parallel,
+                const std::optional<std::array<double, 4>>& domain)
+      : core(points, faces, parallel, domain)
   {}
-  Kinetic_points core;
+  Core core;
 };
 
 // The Python class Delaunay: scipy.spatial.Delaunay's attributes, each computed when first read
 // and kept until the next move().
 struct Delaunay
 {
-  Delaunay(const std::vector<Point>& points, const std::vector<Face>& faces, bool parallel)
-      : core(points, faces, parallel), parallel(parallel)
+  Delaunay(const std::vector<Point>& points, const std::vector<Face>& faces, bool parallel,
+           const std::optional<std::array<double, 4>>& domain)
+      : core(points, faces, parallel, domain), parallel(parallel)
   {}
 
   // py::object members are null until set: the object is made while the GIL is released.
-  Kinetic_points core;
+  Core core;
   bool parallel;
   py::object points;     // (n, 2) float64 array
   py::object statistics; // dict
-  py::object simplices_cache, neighbors_cache, convex_hull_cache, vertex_neighbor_vertices_cache, coplanar_cache,
-      vertex_to_simplex_cache;
+  py::object simplices_cache, neighbors_cache, offsets_cache, convex_hull_cache, vertex_neighbor_vertices_cache,
+      coplanar_cache, vertex_to_simplex_cache;
 
   void forget()
   {
-    for(py::object* o : {&simplices_cache, &neighbors_cache, &convex_hull_cache, &vertex_neighbor_vertices_cache,
-                         &coplanar_cache, &vertex_to_simplex_cache})
+    for(py::object* o : {&simplices_cache, &neighbors_cache, &offsets_cache, &convex_hull_cache,
+                         &vertex_neighbor_vertices_cache, &coplanar_cache, &vertex_to_simplex_cache})
       *o = py::object();
   }
 
@@ -570,7 +819,7 @@ struct Delaunay
   py::object cached(py::object& slot, Make make)
   {
     if(!slot) {
-      py::object value = core.read([&](const Kinetic& k) { return py::object(make(k)); }, true);
+      py::object value = core.read([&](const auto& k) { return py::object(make(k)); }, true);
       slot = value;
     }
     return slot;
@@ -582,7 +831,7 @@ struct Delaunay
       std::pair<std::vector<Intc>, std::vector<Intc>> both;
       {
         py::gil_scoped_release nogil;
-        both = core.read([](const Kinetic& k) { return simplices_and_neighbors_of(k.triangulation()); }, true);
+        both = core.read([](const auto& k) { return simplices_and_neighbors_of(k.triangulation()); }, true);
       }
       simplices_cache = intc_array(std::move(both.first), 3);
       neighbors_cache = intc_array(std::move(both.second), 3);
@@ -606,7 +855,7 @@ struct Delaunay
     std::vector<Intc> found;
     {
       py::gil_scoped_release nogil;
-      found = core.read([&](const Kinetic& k) { return find_simplices(k.triangulation(), queries); }, true);
+      found = core.read([&](const auto& k) { return find_simplices(k.triangulation(), queries); }, true);
     }
     py::array_t<Intc> out(shape);
     std::copy(found.begin(), found.end(), out.mutable_data());
@@ -669,13 +918,21 @@ the baseline of the benchmarks. Returns an (k, 3) int64 array of point indices, 
 counterclockwise; a duplicate point is represented by the smallest of its indices. Raises
 InvalidPrediction for a non-finite coordinate.)doc";
 
-const char* const triangulation_doc = R"doc(Triangulation(points, *, parallel=False)
+const char* const triangulation_doc = R"doc(Triangulation(points, *, parallel=False, domain=None)
 
 The Delaunay triangulation of points that move (a kinetic triangulation), on the C++ class
 Kinetic_Delaunay_triangulation_2. The constructor builds the Delaunay triangulation of
 `points` ((n, 2) array) with delaunay_from_prediction() and no prediction, and keeps one vertex
 per point index (indices of equal points share one). move(new_points) repairs it in place;
-.triangles gives its faces. Delaunay is the same with scipy's attributes.)doc";
+.triangles gives its faces. Delaunay is the same with scipy's attributes.
+
+domain: None (the plane), or (xmin, ymin, xmax, ymax), a square: the triangulation is periodic
+        in it (the flat torus), exactly CGAL's Periodic_2_Delaunay_triangulation_2 of the points
+        (periodic_2.h). Every point, and every point given to move(), must lie in
+        [xmin, xmax) x [ymin, ymax) (the caller wraps them): InvalidPrediction otherwise.
+        .triangles then lists each periodic triangle once and .offsets each corner's offset in
+        periods. With few or clustered points CGAL's covering is 9-sheeted; the triangles are
+        still listed once each.)doc";
 
 const char* const move_doc = R"doc(Moves point i to new_points[i] for every i and makes the triangulation the Delaunay
 triangulation of the new points. new_points must have the same number of points (ValueError
@@ -690,14 +947,16 @@ otherwise). The rule is the C++ Kinetic_Delaunay_triangulation_2::move()'s:
 - Points that were equal (sharing a vertex since the constructor or an earlier move) and no
   longer are: a vertex cannot be split in place, so the triangulation is rebuilt the same way.
   While equal points stay equal, the move is in place.
-- A non-finite new coordinate: raises InvalidPrediction before anything is changed (the
-  points and triangles stay those before the call).
+- A non-finite new coordinate, or with a domain a point outside it: raises InvalidPrediction
+  before anything is changed (the points and triangles stay those before the call).
+- With a domain, a move that leaves CGAL's covering 9-sheeted (before or after) rebuilds it
+  ('rebuilt' is True): the vertices are new.
 
 parallel: CGAL::Parallel_if_available_tag for make_delaunay() or the rebuild; same result.
 Returns the stats dict of the C++ call (as delaunay_from_prediction()), plus 'rebuilt': True
 when the triangulation was rebuilt instead of repaired in place.)doc";
 
-const char* const delaunay_doc = R"doc(Delaunay(points, prediction=None, *, parallel=False)
+const char* const delaunay_doc = R"doc(Delaunay(points, prediction=None, *, parallel=False, domain=None)
 
 A drop-in for scipy.spatial.Delaunay in 2D: the same attributes with the same conventions and
 dtypes, computed exactly (CGAL's exact predicates; co-circular ties broken by CGAL's symbolic
@@ -709,6 +968,12 @@ prediction: None, an (m, 3) integer array of predicted triangles (any faces: wro
 parallel:   use TBB's threads when the module has them (same result).
 furthest_site, incremental: only False (ValueError otherwise); qhull_options: accepted and
             ignored (the triangulation is always the exact one).
+domain:     None (the plane), or (xmin, ymin, xmax, ymax), a square holding every point
+            (half-open): the periodic Delaunay triangulation (CGAL's
+            Periodic_2_Delaunay_triangulation_2 of the points). Then simplices lists each
+            periodic triangle once, offsets[i, j] (an extra attribute, (nsimplex, 3, 2)) is the
+            offset in periods of corner j of simplex i, every simplex has three neighbors,
+            convex_hull is empty, and find_simplex wraps the query points into the domain.
 
 Attributes (computed when first read, kept until move()): points, simplices (each
 counterclockwise), neighbors (neighbors[i, j] opposite simplices[i, j], -1 on the hull),
@@ -727,7 +992,9 @@ The simplex holding each point of xi (an array of shape (..., 2)), as an intc ar
 xi.shape[:-1]; -1 outside the convex hull (and for non-finite points). Exact: triangles are
 closed, a point on an edge or a vertex gets one of the triangles holding it. The points are
 visited in Hilbert order, each located by CGAL's walk from the previous answer.
-bruteforce and tol are accepted for scipy's code and ignored.)doc";
+bruteforce and tol are accepted for scipy's code and ignored. With a domain, each point is
+first wrapped into it (in floating point: x - period * floor((x - xmin) / period)), then
+located exactly; only non-finite points get -1.)doc";
 
 const char* const delaunay_move_doc = R"doc(move(new_points, *, parallel=None)
 
@@ -815,13 +1082,15 @@ PYBIND11_MODULE(delaunay_from_prediction, m)
       py::arg("points"), delaunay_triangulation_doc);
 
   py::class_<Triangulation>(m, "Triangulation", triangulation_doc)
-      .def(py::init([](const py::object& points_in, bool parallel) {
+      .def(py::init([](const py::object& points_in, bool parallel, const py::object& domain_in) {
              const std::vector<Point> points = read_points(points_in, "points");
+             const auto domain = read_domain(domain_in);
              py::gil_scoped_release nogil;
-             return std::make_unique<Triangulation>(points, std::vector<Face>(), parallel);
+             return std::make_unique<Triangulation>(points, std::vector<Face>(), parallel, domain);
            }),
-           py::arg("points"), py::kw_only(), py::arg("parallel") = false,
-           "Builds the Delaunay triangulation of points, an (n, 2) array (see the class documentation).")
+           py::arg("points"), py::kw_only(), py::arg("parallel") = false, py::arg("domain") = py::none(),
+           "Builds the Delaunay triangulation of points, an (n, 2) array, periodic in domain when one is "
+           "given (see the class documentation).")
       .def(
           "move",
           [](Triangulation& t, const py::object& points_in, bool parallel) {
@@ -834,12 +1103,37 @@ PYBIND11_MODULE(delaunay_from_prediction, m)
             std::vector<std::int64_t> triangles;
             {
               py::gil_scoped_release nogil;
-              triangles = t.core.read([](const Kinetic& k) { return triangles_of(k.triangulation()); });
+              triangles = t.core.read([](const auto& k) { return triangles_of(k.triangulation()); });
             }
             return as_array(std::move(triangles), 3);
           },
           "(k, 3) int64 array of point indices, each face counterclockwise (a new array each time; "
-          "equal points: the smallest of their indices).")
+          "equal points: the smallest of their indices). With a domain: each periodic triangle once, "
+          "its corners translated by .offsets.")
+      .def_property_readonly(
+          "offsets",
+          [](const Triangulation& t) -> py::object {
+            if(!t.core.domain())
+              return py::none();
+            std::vector<std::int64_t> offsets;
+            {
+              py::gil_scoped_release nogil;
+              offsets = t.core.read([](const auto& k) {
+                if constexpr(std::is_same_v<std::decay_t<decltype(k.triangulation())>, Periodic_DT>)
+                  return triangles_and_offsets(k.triangulation()).second;
+                else
+                  return std::vector<std::int64_t>();
+              });
+            }
+            const py::ssize_t rows = py::ssize_t(offsets.size() / 6);
+            return as_array(std::move(offsets), 6).attr("reshape")(rows, 3, 2);
+          },
+          "With a domain: (k, 3, 2) int64 array, offsets[i, j] the offset in periods (x, y) of corner j of "
+          "triangle i: the corner is points[triangles[i, j]] + offsets[i, j] * (xmax - xmin). Least value 0 in "
+          "each coordinate of a triangle. None without a domain.")
+      .def_property_readonly(
+          "domain", [](const Triangulation& t) { return domain_tuple(t.core); },
+          "(xmin, ymin, xmax, ymax), the periodic domain; None in the plane.")
       .def_property_readonly(
           "points", [](const Triangulation& t) { return coordinates(t.core); },
           "(n, 2) float64 array: a copy of the current points, by index.")
@@ -848,14 +1142,14 @@ PYBIND11_MODULE(delaunay_from_prediction, m)
           "n, the number of point indices.")
       .def("__repr__", [](const Triangulation& t) {
         const std::size_t triangles = t.core.read(
-            [](const Kinetic& k) { return k.triangulation().dimension() == 2 ? k.triangulation().number_of_faces() : 0; });
+            [](const auto& k) { return triangles_of(k.triangulation()).size() / 3; });
         return "<delaunay_from_prediction.Triangulation of " + std::to_string(t.core.number_of_points()) + " points, " +
                std::to_string(triangles) + " triangles>";
       });
 
   py::class_<Delaunay>(m, "Delaunay", delaunay_doc)
       .def(py::init([](const py::object& points_in, const py::object& prediction, bool parallel, bool furthest_site,
-                       bool incremental, const py::object& qhull_options) {
+                       bool incremental, const py::object& qhull_options, const py::object& domain_in) {
              if(furthest_site)
                throw py::value_error("Delaunay(furthest_site=True): the furthest-site triangulation is not provided");
              if(incremental)
@@ -866,10 +1160,11 @@ PYBIND11_MODULE(delaunay_from_prediction, m)
              const py::object faces_in =
                  !prediction.is_none() && py::hasattr(prediction, "simplices") ? prediction.attr("simplices") : prediction;
              const std::vector<Face> faces = read_indices<3>(faces_in, "prediction", points.size());
+             const auto domain = read_domain(domain_in);
              std::unique_ptr<Delaunay> d;
              {
                py::gil_scoped_release nogil;
-               d = std::make_unique<Delaunay>(points, faces, parallel);
+               d = std::make_unique<Delaunay>(points, faces, parallel, domain);
              }
              d->points = xy_array(points);
              py::dict stats = stats_dict(d->core.build_statistics());
@@ -878,7 +1173,8 @@ PYBIND11_MODULE(delaunay_from_prediction, m)
              return d;
            }),
            py::arg("points"), py::arg("prediction") = py::none(), py::kw_only(), py::arg("parallel") = false,
-           py::arg("furthest_site") = false, py::arg("incremental") = false, py::arg("qhull_options") = py::none())
+           py::arg("furthest_site") = false, py::arg("incremental") = false, py::arg("qhull_options") = py::none(),
+           py::arg("domain") = py::none())
       .def_readonly("points", &Delaunay::points, "(n, 2) float64 array: the points (after move(), the new ones).")
       .def_property_readonly(
           "simplices", [](Delaunay& d) { return d.simplices_and_neighbors().first; },
@@ -887,17 +1183,38 @@ PYBIND11_MODULE(delaunay_from_prediction, m)
           "neighbors", [](Delaunay& d) { return d.simplices_and_neighbors().second; },
           "(nsimplex, 3) intc array: neighbors[i, j] is the simplex opposite simplices[i, j], -1 on the hull.")
       .def_property_readonly(
+          "offsets",
+          [](Delaunay& d) -> py::object {
+            if(!d.core.domain())
+              return py::none();
+            return d.cached(d.offsets_cache, [](const auto& k) -> py::object {
+              if constexpr(std::is_same_v<std::decay_t<decltype(k.triangulation())>, Periodic_DT>) {
+                std::vector<std::int64_t> offsets = triangles_and_offsets(k.triangulation()).second;
+                std::vector<Intc> values(offsets.begin(), offsets.end());
+                const py::ssize_t rows = py::ssize_t(values.size() / 6);
+                return intc_array(std::move(values), 6).attr("reshape")(rows, 3, 2);
+              } else
+                return py::none();
+            });
+          },
+          "With a domain: (nsimplex, 3, 2) intc array, the offset in periods (x, y) of each corner of each "
+          "simplex (the corner is points[simplices[i, j]] + offsets[i, j] * (xmax - xmin)); None in the plane.")
+      .def_property_readonly(
+          "domain", [](const Delaunay& d) { return domain_tuple(d.core); },
+          "(xmin, ymin, xmax, ymax), the periodic domain; None in the plane.")
+      .def_property_readonly(
           "convex_hull",
           [](Delaunay& d) {
-            return d.cached(d.convex_hull_cache, [](const Kinetic& k) {
+            return d.cached(d.convex_hull_cache, [](const auto& k) {
               return intc_array(convex_hull_edges(k.triangulation()), 2);
             });
           },
-          "(h, 2) intc array: the hull's edges, counterclockwise around the hull (empty below dimension 2).")
+          "(h, 2) intc array: the hull's edges, counterclockwise around the hull (empty below dimension 2, and "
+          "on the torus, which has no hull).")
       .def_property_readonly(
           "vertex_neighbor_vertices",
           [](Delaunay& d) {
-            return d.cached(d.vertex_neighbor_vertices_cache, [&](const Kinetic& k) {
+            return d.cached(d.vertex_neighbor_vertices_cache, [&](const auto& k) {
               auto csr = vertex_neighbor_vertices(k.triangulation(), k.number_of_points());
               return py::object(py::make_tuple(intc_array(std::move(csr.first), 0), intc_array(std::move(csr.second), 0)));
             });
@@ -906,14 +1223,14 @@ PYBIND11_MODULE(delaunay_from_prediction, m)
       .def_property_readonly(
           "coplanar",
           [](Delaunay& d) {
-            return d.cached(d.coplanar_cache, [](const Kinetic& k) { return intc_array(coplanar_points(k), 3); });
+            return d.cached(d.coplanar_cache, [](const auto& k) { return intc_array(coplanar_points(k), 3); });
           },
           "(c, 3) intc array: each point that is no vertex (a duplicate of a smaller index), a simplex holding its "
           "vertex (-1 below dimension 2), and that vertex's point index.")
       .def_property_readonly(
           "vertex_to_simplex",
           [](Delaunay& d) {
-            return d.cached(d.vertex_to_simplex_cache, [](const Kinetic& k) { return intc_array(vertex_to_simplex(k), 0); });
+            return d.cached(d.vertex_to_simplex_cache, [](const auto& k) { return intc_array(vertex_to_simplex(k), 0); });
           },
           "(n,) intc array: a simplex holding each point's vertex (-1 below dimension 2).")
       .def_property_readonly("npoints", [](const Delaunay& d) { return d.core.number_of_points(); }, "n.")

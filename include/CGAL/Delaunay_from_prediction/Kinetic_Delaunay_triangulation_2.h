@@ -4,8 +4,9 @@
 //
 // Kinetic_Delaunay_triangulation_2: the Delaunay triangulation of indexed points that move,
 // one vertex per point index, repaired in place by make_delaunay() at each move, or rebuilt
-// with the previous triangulation as the prediction when points merge or split. The one
-// place where that rule is written: dfp kinetic and the Python classes use it.
+// with the previous triangulation as the prediction when points merge or split, in the plane or
+// on the torus (periodic_2.h specializes Kinetic_access). The one place where that rule is
+// written: dfp kinetic and the Python classes use it.
 
 #ifndef CGAL_DELAUNAY_FROM_PREDICTION_KINETIC_DELAUNAY_TRIANGULATION_2_H
 #define CGAL_DELAUNAY_FROM_PREDICTION_KINETIC_DELAUNAY_TRIANGULATION_2_H
@@ -31,6 +32,52 @@
 
 namespace CGAL {
 namespace Delaunay_from_prediction {
+namespace internal {
+
+// What Kinetic_Delaunay_triangulation_2 asks of its triangulation type, for a
+// Delaunay_triangulation_2; periodic_2.h specializes it for Periodic_2_Delaunay_triangulation_2.
+template <class DT>
+struct Kinetic_access
+{
+  // An empty triangulation with the traits of `dt`.
+  static DT empty_like(const DT& dt) { return DT(dt.geom_traits()); }
+  // Calls f(v) for every vertex holding a point index in info() (every copy of a vertex, where
+  // the triangulation keeps copies).
+  template <class F>
+  static void for_each_vertex(DT& dt, F f)
+  {
+    for(auto v = dt.finite_vertices_begin(); v != dt.finite_vertices_end(); ++v)
+      f(v);
+  }
+  // Calls f(v) for each vertex once (no copies).
+  template <class F>
+  static void for_each_point_vertex(const DT& dt, F f)
+  {
+    for(auto v = dt.finite_vertices_begin(); v != dt.finite_vertices_end(); ++v)
+      f(v);
+  }
+  // Throws Invalid_prediction naming the first point that the triangulation cannot hold.
+  template <class PointRange>
+  static void check_points(const DT&, const PointRange& points)
+  {
+    check_points_are_finite(std::begin(points), std::size(points));
+  }
+  // make_delaunay(); the second member: whether the vertex objects survived.
+  template <class ConcurrencyTag, class NamedParameters>
+  static std::pair<Statistics, bool> repair(DT& dt, const NamedParameters& np)
+  {
+    return {make_delaunay<ConcurrencyTag>(dt, np), true};
+  }
+  template <class ConcurrencyTag, class PointRange, class FaceRange, class NamedParameters>
+  static Statistics build(const PointRange& points, const FaceRange& faces, DT& dt, const NamedParameters& np)
+  {
+    return delaunay_from_prediction<ConcurrencyTag>(points, faces, dt, np);
+  }
+  // The faces as index triples: the prediction of a rebuild.
+  static std::vector<std::array<std::size_t, 3>> faces(const DT& dt) { return faces_of(dt); }
+};
+
+} // namespace internal
 
 /*!
 \ingroup PkgDelaunayFromPredictionRef
@@ -61,7 +108,15 @@ coordinate (naming the point), before anything changes. Another exception during
 (out of memory) leaves the points moved but the triangulation possibly not Delaunay: call
 `build()` again.
 
-\tparam DT a `CGAL::Delaunay_triangulation_2<Gt, Tds>` whose vertices have an `info()`
+On the torus (`DT` a `CGAL::Periodic_2_Delaunay_triangulation_2`, with
+`<CGAL/Delaunay_from_prediction/periodic_2.h>` included): the points must lie in the domain of
+the triangulation given to the constructor (`move()` throws `Invalid_prediction` naming the
+first point outside it, or for a period the periodic functions refuse, before anything changes); `set_point()` moves every copy of a vertex of
+a 9-sheeted covering; a move that finds or leaves the covering 9-sheeted counts as a rebuild (new
+vertex objects).
+
+\tparam DT a `CGAL::Delaunay_triangulation_2<Gt, Tds>` or a
+        `CGAL::Periodic_2_Delaunay_triangulation_2<Gt, Tds>` whose vertices have an `info()`
         assignable from `std::size_t` (for example with
         `CGAL::Triangulation_vertex_base_with_info_2<std::size_t, Gt>`).
 
@@ -91,6 +146,9 @@ public:
 
   /// an empty triangulation of no points.
   Kinetic_Delaunay_triangulation_2() = default;
+  /// an empty triangulation of no points, whose triangulations are made with the traits of `dt`
+  /// (and, for a periodic triangulation, its domain); `dt` is only read.
+  explicit Kinetic_Delaunay_triangulation_2(const DT& dt) : dt_(Access::empty_like(dt)) {}
   // Not copyable: the vertex handles by index point into the triangulation held.
   Kinetic_Delaunay_triangulation_2(const Kinetic_Delaunay_triangulation_2&) = delete;
   Kinetic_Delaunay_triangulation_2& operator=(const Kinetic_Delaunay_triangulation_2&) = delete;
@@ -104,8 +162,8 @@ public:
   Statistics build(const PointRange& points, const FaceRange& faces,
                    const NamedParameters& np = parameters::default_values())
   {
-    DT dt;
-    const Statistics stats = delaunay_from_prediction<ConcurrencyTag>(points, faces, dt, np);
+    DT dt = Access::empty_like(dt_);
+    const Statistics stats = Access::template build<ConcurrencyTag>(points, faces, dt, np);
     take(dt, points, stats.duplicate_points > 0);
     last_move_rebuilt_ = false;
     return stats;
@@ -127,7 +185,7 @@ public:
   void assign(DT& dt, const PointRange& points)
   {
     const std::size_t n = std::size(points);
-    for(auto v = dt.finite_vertices_begin(); v != dt.finite_vertices_end(); ++v) {
+    Access::for_each_point_vertex(dt, [&](Vertex_handle v) {
       const std::size_t i = static_cast<std::size_t>(v->info());
       if(i >= n || !equal(v->point(), points[i], dt)) {
         std::ostringstream msg;
@@ -135,7 +193,7 @@ public:
             << ", which is not the index of its point among the " << n << " points";
         throw Invalid_prediction(msg.str());
       }
-    }
+    });
     take(dt, points, dt.number_of_vertices() < n);
     dt.clear();
     last_move_rebuilt_ = false;
@@ -157,20 +215,24 @@ public:
           << vertex_of_.size();
       throw Invalid_prediction(msg.str());
     }
-    internal::check_points_are_finite(std::begin(points), n); // before anything changes
+    Access::check_points(dt_, points); // before anything changes
     if(!shares_vertices_ || equal_points_stay_equal(points)) {
-      for(auto v = dt_.finite_vertices_begin(); v != dt_.finite_vertices_end(); ++v)
-        v->set_point(points[static_cast<std::size_t>(v->info())]);
+      Access::for_each_vertex(dt_, [&](Vertex_handle v) { v->set_point(points[static_cast<std::size_t>(v->info())]); });
       try {
-        const Statistics stats = make_delaunay<ConcurrencyTag>(dt_, np);
-        last_move_rebuilt_ = false;
-        return stats;
+        const std::pair<Statistics, bool> repaired = Access::template repair<ConcurrencyTag>(dt_, np);
+        last_move_rebuilt_ = !repaired.second;
+        if(last_move_rebuilt_) { // new vertex objects (a periodic triangulation not 1-sheeted)
+          DT rebuilt = Access::empty_like(dt_);
+          rebuilt.swap(dt_);
+          take(rebuilt, points, shares_vertices_);
+        }
+        return repaired.first;
       } catch(const Invalid_prediction&) {
-        // Two vertices moved onto one point (the only refusal left, the points being finite).
-        // The connectivity is as it was: a good prediction for the rebuild.
+        // Two vertices moved onto one point (the only refusal left, the points having been
+        // checked). The connectivity is as it was: a good prediction for the rebuild.
       }
     }
-    const Statistics stats = build<ConcurrencyTag>(points, internal::faces_of(dt_), np);
+    const Statistics stats = build<ConcurrencyTag>(points, Access::faces(dt_), np);
     last_move_rebuilt_ = true;
     return stats;
   }
@@ -200,6 +262,8 @@ public:
   bool last_move_rebuilt() const { return last_move_rebuilt_; }
 
 private:
+  using Access = internal::Kinetic_access<DT>;
+
   template <class P, class Q>
   static bool equal(const P& p, const Q& q, const DT& dt)
   {
@@ -228,11 +292,11 @@ private:
     const std::size_t n = std::size(points);
     std::vector<Vertex_handle> vertex_of(n);
     std::vector<bool> has_vertex(n, false);
-    for(auto v = dt.finite_vertices_begin(); v != dt.finite_vertices_end(); ++v) {
+    Access::for_each_point_vertex(dt, [&](Vertex_handle v) {
       const std::size_t i = static_cast<std::size_t>(v->info());
       vertex_of[i] = v;
       has_vertex[i] = true;
-    }
+    });
     if(has_duplicates) {
       std::vector<std::size_t> order(n);
       std::iota(order.begin(), order.end(), std::size_t(0));

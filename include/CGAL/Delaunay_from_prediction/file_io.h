@@ -446,6 +446,37 @@ void write_edges(const std::string& file, const EdgeRange& edges, std::size_t fi
 
 /*!
 \ingroup PkgDelaunayFromPredictionRef
+writes the triangles of a periodic triangulation to `file` as a Triangle `.ele` file with six
+attributes: a first line `m 3 6`, then `j a b c ax ay bx by cx cy`, the corners' point indices
+followed by each corner's offset in periods (the corner is the point translated by `ax` domain
+widths in x and `ay` heights in y). Triangles and indices are numbered from `first_index` (0 or
+1); `read_faces()` reads such a file back as index triples (the attributes are skipped), which is
+the prediction the periodic `delaunay_from_prediction()` takes.
+\param file the file name.
+\param triangles the triangles, each with `vertices[k]` and `offsets[k][0]`, `offsets[k][1]`
+       (non-negative), as `indexed_periodic_triangles()` returns them.
+\param first_index the number of the first triangle and of the first point.
+\throws IO::File_error if the file cannot be written.
+*/
+template <class TriangleRange>
+void write_periodic_ele(const std::string& file, const TriangleRange& triangles, std::size_t first_index = 0)
+{
+  CGAL::Delaunay_from_prediction::internal::Text_writer out(file);
+  out.number(std::size_t(std::distance(std::begin(triangles), std::end(triangles)))).text(" 3 6\n");
+  std::size_t i = first_index;
+  for(const auto& t : triangles) {
+    out.number(i++);
+    for(std::size_t k = 0; k < 3; ++k)
+      out.text(" ").number(std::size_t(t.vertices[k]) + first_index);
+    for(std::size_t k = 0; k < 3; ++k)
+      out.text(" ").number(std::size_t(t.offsets[k][0])).text(" ").number(std::size_t(t.offsets[k][1]));
+    out.text("\n");
+  }
+  out.close();
+}
+
+/*!
+\ingroup PkgDelaunayFromPredictionRef
 writes the triangulation `dt` of `points` to `file`, in the format its extension gives: its
 finite faces (counter-clockwise) to a `.ele` or OFF file, its finite edges to a `.edge` file
 (the only one of the three that holds anything when the points are collinear).

@@ -12,6 +12,7 @@
 #ifndef CGAL_DELAUNAY_FROM_PREDICTION_PERIODIC_2_H
 #define CGAL_DELAUNAY_FROM_PREDICTION_PERIODIC_2_H
 
+#include <CGAL/Delaunay_from_prediction/Kinetic_Delaunay_triangulation_2.h>
 #include <CGAL/Delaunay_from_prediction/Statistics.h>
 #include <CGAL/Delaunay_from_prediction/parameters.h>
 #include <CGAL/Delaunay_from_prediction/visitor.h>
@@ -27,11 +28,14 @@
 #include <CGAL/Periodic_2_Delaunay_triangulation_2.h>
 
 #include <algorithm>
+#include <cmath>
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <iterator>
 #include <numeric>
 #include <sstream>
+#include <type_traits>
 #include <vector>
 
 namespace CGAL {
@@ -57,6 +61,28 @@ void check_in_domain(const Point& p, const Rectangle& domain, const char* item, 
   else
     msg << " has a non-finite coordinate";
   throw Invalid_prediction(msg.str());
+}
+
+// Throws Invalid_prediction when the domain's period is outside [2^-500, 2^500] and the traits'
+// number type is a floating-point one (Epick's double). CGAL's periodic triangulation decides
+// its covering by comparing squared edge lengths with 0.166 period^2 in that number type: below
+// that range the square underflows (to 0 or to subnormals: CGAL then takes a triangulation of a
+// few points for a 1-sheeted covering and crashes), above it the squares of a few periods
+// overflow. An exact number type (Epeck) has no such limit.
+template <class Gt, class Rectangle>
+void check_domain_width(const Rectangle& domain)
+{
+  if constexpr(std::is_floating_point<typename Gt::FT>::value) {
+    const double width = CGAL::to_double(domain.xmax()) - CGAL::to_double(domain.xmin());
+    if(width >= std::ldexp(1.0, -500) && width <= std::ldexp(1.0, 500))
+      return;
+    std::ostringstream msg;
+    msg << "Delaunay_from_prediction: the periodic domain's period " << width
+        << " is outside [2^-500, 2^500] (about 3e-151 to 3e150): CGAL's Periodic_2_triangulation_2 compares "
+           "squared edge lengths with 0.166 period^2 in double, which underflows or overflows there; scale the "
+           "coordinates, or use exact constructions (Epeck)";
+    throw Invalid_prediction(msg.str());
+  }
 }
 
 // The index of a point among `points`, by exact lexicographic comparisons: the smallest index
@@ -276,7 +302,9 @@ outcome is in doubt: no empty circle may be wider than about 0.41 periods) are b
 
 \returns what the call did, see `Statistics`.
 \throws Invalid_prediction if a point has a non-finite coordinate or lies outside `t.domain()`,
-        or a face has an index out of range or repeats an index. Then `t` is unchanged.
+        or a face has an index out of range or repeats an index, or, with a floating-point
+        number type (`Epick`), the domain's period is outside \f$[2^{-500}, 2^{500}]\f$ (\cgal's
+        covering test squares it in double). Then `t` is unchanged.
 */
 template <class ConcurrencyTag = Sequential_tag, class PointRange, class FaceRange, class Gt, class Tds,
           class NamedParameters = parameters::Default_named_parameters>
@@ -304,6 +332,7 @@ Statistics delaunay_from_prediction(const PointRange& points, const FaceRange& f
   std::vector<std::uint32_t> triples;
   bool fits = true;
   run(Stage::check, [&] {
+    internal::check_domain_width<Gt>(t.domain());
     copy.assign(std::begin(points), std::end(points));
     for(std::size_t i = 0; i < n; ++i)
       internal::check_in_domain(copy[i], t.domain(), "point", i);
@@ -391,7 +420,8 @@ each with the `info()` of the vertex that was at its point.
 \returns what the call did, see `Statistics`.
 \throws Invalid_prediction if a vertex has a non-finite coordinate or lies outside `t.domain()`
         (naming it by its rank in `t.unique_vertices_begin()` order), or two vertices are at the
-        same point. Then `t` is unchanged.
+        same point, or the period is out of range as for `delaunay_from_prediction()`. Then `t`
+        is unchanged.
 */
 template <class ConcurrencyTag = Sequential_tag, class Gt, class Tds,
           class NamedParameters = parameters::Default_named_parameters>
@@ -414,6 +444,7 @@ Statistics make_delaunay(Periodic_2_Delaunay_triangulation_2<Gt, Tds>& t,
   stats.faces_in = t.number_of_faces();
 
   run(Stage::check, [&] {
+    internal::check_domain_width<Gt>(t.domain());
     std::size_t rank = 0;
     for(auto v = t.unique_vertices_begin(); v != t.unique_vertices_end(); ++v, ++rank)
       internal::check_in_domain(v->point(), t.domain(), "vertex", rank);
@@ -461,6 +492,108 @@ Statistics make_delaunay(Periodic_2_Delaunay_triangulation_2<Gt, Tds>& t,
   });
   return stats;
 }
+
+/*!
+\ingroup PkgDelaunayFromPredictionRef
+A triangle of a periodic triangulation by point indices: its corners are the points of indices
+`vertices[k]` translated by `offsets[k]` periods (`offsets[k][0]` times the domain's width in x,
+`offsets[k][1]` times its height in y), counter-clockwise.
+*/
+struct Indexed_periodic_triangle
+{
+  std::array<std::size_t, 3> vertices; ///< the point indices of the corners.
+  std::array<std::array<int, 2>, 3> offsets; ///< each corner's offset, in periods; least value 0 in x and in y.
+};
+
+/*!
+\ingroup PkgDelaunayFromPredictionRef
+the triangles of the periodic triangulation `t`, each once (a 9-sheeted covering's copies
+counted once, as \cgal's `Periodic_2_triangulation_2::UNIQUE` iterator gives them), by the
+`info()` of their vertices (for a copy, the `info()` of its original vertex): the point indices
+when `t` was made by `delaunay_from_prediction()`. Linear in the size of `t`.
+
+\tparam Gt, Tds as for `delaunay_from_prediction()`; the vertices have an `info()` convertible to
+        `std::size_t`.
+*/
+template <class Gt, class Tds>
+std::vector<Indexed_periodic_triangle> indexed_periodic_triangles(const Periodic_2_Delaunay_triangulation_2<Gt, Tds>& t)
+{
+  using P2DT2 = Periodic_2_Delaunay_triangulation_2<Gt, Tds>;
+  std::vector<Indexed_periodic_triangle> triangles;
+  triangles.reserve(t.number_of_faces());
+  for(auto it = t.periodic_triangles_begin(P2DT2::UNIQUE); it != t.periodic_triangles_end(P2DT2::UNIQUE); ++it) {
+    const auto f = it.get_face();
+    Indexed_periodic_triangle triangle;
+    int low_x = (*it)[0].second.x(), low_y = (*it)[0].second.y();
+    for(int k = 1; k < 3; ++k) {
+      low_x = (std::min)(low_x, (*it)[k].second.x());
+      low_y = (std::min)(low_y, (*it)[k].second.y());
+    }
+    for(int k = 0; k < 3; ++k) {
+      triangle.vertices[k] = static_cast<std::size_t>(t.get_original_vertex(f->vertex(k))->info());
+      triangle.offsets[k] = {(*it)[k].second.x() - low_x, (*it)[k].second.y() - low_y};
+    }
+    triangles.push_back(triangle);
+  }
+  return triangles;
+}
+
+namespace internal {
+
+// Kinetic_Delaunay_triangulation_2 on the torus: set_point() moves every copy of a vertex, the
+// points must lie in the domain, and make_delaunay() keeps the vertex objects only when the
+// triangulation is 1-sheeted before and after.
+template <class Gt, class Tds>
+struct Kinetic_access<Periodic_2_Delaunay_triangulation_2<Gt, Tds>>
+{
+  using DT = Periodic_2_Delaunay_triangulation_2<Gt, Tds>;
+
+  static DT empty_like(const DT& dt) { return DT(dt.domain(), dt.geom_traits()); }
+  template <class F>
+  static void for_each_vertex(DT& dt, F f)
+  {
+    for(auto v = dt.tds().vertices().begin(); v != dt.tds().vertices().end(); ++v)
+      f(typename DT::Vertex_handle(v));
+  }
+  template <class F>
+  static void for_each_point_vertex(const DT& dt, F f)
+  {
+    for(auto v = dt.unique_vertices_begin(); v != dt.unique_vertices_end(); ++v)
+      f(typename DT::Vertex_handle(v));
+  }
+  template <class PointRange>
+  static void check_points(const DT& dt, const PointRange& points)
+  {
+    check_domain_width<Gt>(dt.domain());
+    std::size_t i = 0;
+    for(const auto& p : points)
+      check_in_domain(p, dt.domain(), "point", i++);
+  }
+  template <class ConcurrencyTag, class NamedParameters>
+  static std::pair<Statistics, bool> repair(DT& dt, const NamedParameters& np)
+  {
+    const bool was_1_sheeted = dt.is_1_cover();
+    const Statistics stats = make_delaunay<ConcurrencyTag>(dt, np);
+    return {stats, was_1_sheeted && dt.is_1_cover()};
+  }
+  template <class ConcurrencyTag, class PointRange, class FaceRange, class NamedParameters>
+  static Statistics build(const PointRange& points, const FaceRange& faces, DT& dt, const NamedParameters& np)
+  {
+    return delaunay_from_prediction<ConcurrencyTag>(points, faces, dt, np);
+  }
+  // The triangles as index triples, but for those that repeat a point (only a 9-sheeted
+  // covering has them; an index triple cannot say them).
+  static std::vector<std::array<std::size_t, 3>> faces(const DT& dt)
+  {
+    std::vector<std::array<std::size_t, 3>> faces;
+    for(const Indexed_periodic_triangle& t : indexed_periodic_triangles(dt))
+      if(t.vertices[0] != t.vertices[1] && t.vertices[1] != t.vertices[2] && t.vertices[2] != t.vertices[0])
+        faces.push_back(t.vertices);
+    return faces;
+  }
+};
+
+} // namespace internal
 
 } // namespace Delaunay_from_prediction
 } // namespace CGAL

@@ -12,7 +12,12 @@
 #    a wrong command line: exit status 2;
 #  - kinetic: frames repaired one after another, each equal to CGAL's build (--check), one
 #    output per frame with '{}', points that meet and part again (rebuilt), that meet and
-#    stay equal (in place), --cgal, a frame of another size.
+#    stay equal (in place), --cgal, a frame of another size;
+#  - --periodic: triangulate and kinetic on the torus, each result CGAL's periodic triangulation
+#    (--check), offsets written as six .ele attributes and read back as a prediction certified
+#    face for face, --threads 2, --cgal, another domain, few points (9-sheeted), points that meet
+#    and part, and the errors (a point outside the domain, a domain not square, an edge
+#    prediction, an output not .ele).
 set -uo pipefail
 
 dfp=$1
@@ -202,6 +207,78 @@ expect_status 0 kinetic a.node frame1.node frame2.node --cgal --check
 head -n 100 a.node | awk 'NR == 1 { print 99, 2, 0, 0; next } { print }' > short.node
 expect_status 1 kinetic a.node short.node
 expect_message "short.node: the frame has 99 points, the first frame 3000"
+
+# --- periodic -----------------------------------------------------------------------------
+# The triangles of a periodic .ele file with their offsets: each corner "index:ox,oy", the
+# triangle rotated to start at its smallest index (the corners of a 1-sheeted covering differ), sorted.
+periodic_triangles_of() {
+  awk 'NR > 1 && NF >= 10 { c[0] = $2 ":" $5 "," $6; c[1] = $3 ":" $7 "," $8; c[2] = $4 ":" $9 "," $10;
+         k = 0; if($3 < $2 && $3 < $4) k = 1; else if($4 < $2 && $4 < $3) k = 2;
+         print c[k], c[(k + 1) % 3], c[(k + 2) % 3] }' "$1" | sort
+}
+# Moves every point of a .node by up to $2 in x and y, wrapped into [0, 1).
+moved_node() {
+  awk -v d="$2" -v seed="$3" 'BEGIN { srand(seed) } NR == 1 { print; next } {
+         x = $2 + d * (2 * rand() - 1); y = $3 + d * (2 * rand() - 1);
+         if(x < 0) x += 1; if(x >= 1) x -= 1; if(y < 0) y += 1; if(y >= 1) y -= 1;
+         if(x >= 1) x = 0; if(y >= 1) y = 0;
+         printf "%d %.17g %.17g\n", $1, x, y }' "$1"
+}
+random_node 2000 0 13 > p.node
+expect_status 0 triangulate p.node -o p.ele --periodic 0 0 1 1 --check --stats
+expect_message "the result is CGAL's periodic Delaunay triangulation"
+[ "$(stat covering)" = 1-sheeted ] || fail "periodic: covering $(stat covering)"
+[ "$(stat triangles)" = 4000 ] || fail "periodic: $(stat triangles) triangles, the torus has 2n = 4000"
+[ "$(head -1 p.ele)" = "4000 3 6" ] || fail "periodic p.ele header: $(head -1 p.ele)"
+awk 'NR > 1 { if(NF != 10) bad = 1; for(k = 5; k <= 10; ++k) if($k != 0 && $k != 1) bad = 1 } END { exit bad }' p.ele ||
+  fail "p.ele: a line without six offsets of 0 or 1"
+awk 'NR > 1 { if($5 + $7 + $9 + $6 + $8 + $10 > 0) crossing = 1 } END { exit !crossing }' p.ele ||
+  fail "p.ele: no triangle crosses a side of the domain"
+expect_status 0 triangulate p.node --prediction p.ele -o p2.ele --periodic 0 0 1 1 --check --stats
+[ "$(stat faces_certified)" = 4000 ] && [ "$(stat fell_back)" = false ] ||
+  fail "periodic .ele read back: $(stat faces_certified) faces certified, fell_back $(stat fell_back)"
+[ "$(periodic_triangles_of p2.ele)" = "$(periodic_triangles_of p.ele)" ] || fail "periodic read back gave other triangles"
+expect_status 0 triangulate p.node --prediction p.ele -o p3.ele --periodic 0 0 1 1 --threads 2 --check
+[ "$(periodic_triangles_of p3.ele)" = "$(periodic_triangles_of p.ele)" ] || fail "periodic --threads 2 gave other triangles"
+expect_status 0 triangulate p.node -o p4.ele --periodic 0 0 1 1 --cgal
+[ "$(periodic_triangles_of p4.ele)" = "$(periodic_triangles_of p.ele)" ] || fail "periodic --cgal gave other triangles"
+# Another domain: the same points scaled to [-2, 6)^2 give the same triangles.
+awk 'NR == 1 { print; next } { printf "%d %.17g %.17g\n", $1, 8 * $2 - 2, 8 * $3 - 2 }' p.node > q.node
+expect_status 0 triangulate q.node --prediction p.ele -o q.ele --periodic -2 -2 6 6 --check
+[ "$(periodic_triangles_of q.ele)" = "$(periodic_triangles_of p.ele)" ] || fail "periodic [-2, 6)^2 gave other triangles"
+# Few points: CGAL's 9-sheeted covering.
+random_node 12 0 17 > few.node
+expect_status 0 triangulate few.node -o few.ele --periodic 0 0 1 1 --check --stats
+[ "$(stat covering)" = 9-sheeted ] || fail "12 points: covering $(stat covering)"
+# Kinetic frames: small moves (repaired in place), then moves that cross the sides.
+moved_node p.node 0.0003 1 > pf1.node
+moved_node pf1.node 0.01 2 > pf2.node
+expect_status 0 kinetic p.node pf1.node pf2.node -o 'pk{}.ele' --periodic 0 0 1 1 --check --stats
+expect_message "every frame is CGAL's periodic Delaunay triangulation"
+grep -q "^frame 1: .*faces_certified" out.txt && ! grep -q "^frame 1: .*rebuilt" out.txt ||
+  fail "periodic kinetic: frame 1 should be repaired in place: $(cat out.txt)"
+expect_status 0 triangulate pf2.node -o pf2.ele --periodic 0 0 1 1
+[ "$(periodic_triangles_of pk2.ele)" = "$(periodic_triangles_of pf2.ele)" ] || fail "periodic kinetic frame 2 differs from triangulating it"
+awk 'NR == 1 { print; next } $1 == 7 { print $1, 0.5, 0.5; next } $1 == 8 { print $1, 0.5, 0.5; next } { print }' pf1.node > pmeet.node
+expect_status 0 kinetic p.node pmeet.node pf2.node --periodic 0 0 1 1 --check --stats
+grep -q "^frame 1: .*rebuilt" out.txt && grep -q "^frame 2: .*rebuilt" out.txt ||
+  fail "periodic kinetic: points that meet and part should rebuild: $(cat out.txt)"
+expect_status 0 kinetic p.node pf1.node --periodic 0 0 1 1 --cgal --check
+# Errors.
+awk 'NR == 1 { print; next } $1 == 5 { print $1, 1, 0.5; next } { print }' p.node > pout.node
+expect_status 1 triangulate pout.node -o o.ele --periodic 0 0 1 1
+expect_message "point 5 (1, 0.5) lies outside the periodic domain [0, 1) x [0, 1)"
+expect_status 1 kinetic p.node pout.node --periodic 0 0 1 1
+expect_message "point 5 (1, 0.5) lies outside the periodic domain"
+expect_status 2 triangulate p.node -o o.ele --periodic 0 0 1 2
+expect_message "the domain must be a square"
+expect_status 2 triangulate p.node -o o.ele --periodic 0 0 1
+expect_status 2 triangulate p.node -o o.ele --periodic 0 0 1 x
+expect_message "--periodic needs finite numbers, not 'x'"
+expect_status 2 triangulate p.node -o o.off --periodic 0 0 1 1
+expect_message "--periodic writes a .ele file"
+expect_status 2 triangulate p.node --prediction c.edge -o o.ele --periodic 0 0 1 1
+expect_message "--periodic takes a prediction of faces"
 
 if [ "$failures" -ne 0 ]; then
   echo "$failures check(s) failed"

@@ -22,9 +22,9 @@
 
 #include <CGAL/Delaunay_from_prediction/Statistics.h>
 #include <CGAL/Delaunay_from_prediction/internal/import/hole_tracing.h>
+#include <CGAL/Delaunay_from_prediction/internal/import/open_halfedges.h>
 #include <CGAL/Delaunay_from_prediction/internal/toolbox/concurrency.h>
 #include <CGAL/Delaunay_from_prediction/internal/toolbox/dense_index.h>
-#include <CGAL/Delaunay_from_prediction/internal/toolbox/hash_map.h>
 #include <CGAL/Delaunay_from_prediction/internal/toolbox/predicates.h>
 
 #include <CGAL/FPU.h>
@@ -292,11 +292,14 @@ inline void reverse_faces(Torus_triangulation& tt, const std::vector<unsigned ch
 
 // The faces given as index triples (validated: in range, three different indices), in any
 // orientation, with translations by the minimum-image convention. Their half-edges are paired
-// by a hash of undirected edges; the faces are then oriented consistently, face by face across
-// the edges from the first face of each component (counterclockwise), so that a face the
-// prediction got inverted stays inverted (the untangling's). Outcome::ok when every edge has
-// exactly two faces, which fit together (the faces close up into an oriented surface without
-// boundary); the orientation of the whole is orient_to_cover_once()'s.
+// by undirected edge (Open_halfedges: the faces come sorted by smallest index from
+// Spatial_order, so the open ones stay few and in cache); the faces are then oriented
+// consistently, face by face across the edges from the first face of each component
+// (counterclockwise), so that a face the prediction got inverted stays inverted (the
+// untangling's). Outcome::ok when every half-edge has a twin and the faces fit together (they
+// close up into an oriented surface without boundary); the orientation of the whole is
+// orient_to_cover_once()'s. An edge of four faces is paired two by two: such a surface covers
+// the torus more than once near that edge, which the covering test and the untangling refuse.
 template <class Gt>
 Outcome import_index_triples(const std::vector<std::uint32_t>& triples, const Torus_geometry<Gt>& geometry,
                              Torus_triangulation& tt)
@@ -310,21 +313,17 @@ Outcome import_index_triples(const std::vector<std::uint32_t>& triples, const To
   }
   auto from = [&](std::size_t h) { return tt.vertex[h - h % 3 + std::size_t(ccw(int(h % 3)))]; };
   auto to = [&](std::size_t h) { return tt.vertex[h - h % 3 + std::size_t(cw(int(h % 3)))]; };
-  constexpr std::uint32_t paired = std::uint32_t(-2);
-  Hash_map<std::uint64_t, std::uint32_t> first_half_edge(3 * faces);
+  Open_halfedges open(geometry.size());
   for(std::size_t h = 0; h < 3 * faces; ++h) {
-    const auto slot = first_half_edge.insert(undirected_edge_key(from(h), to(h)), std::uint32_t(h));
-    if(slot.second)
-      continue;
-    if(*slot.first == paired)
-      return Outcome::overlapping_faces; // an edge of three faces or more
-    tt.twin[h] = *slot.first;
-    tt.twin[*slot.first] = std::uint32_t(h);
-    *slot.first = paired;
+    const std::uint32_t a = from(h), b = to(h);
+    std::uintptr_t twin = 0;
+    if(open.take_or_open((std::min)(a, b), (std::max)(a, b), h, twin)) {
+      tt.twin[h] = std::uint32_t(twin);
+      tt.twin[twin] = std::uint32_t(h);
+    }
   }
-  for(std::size_t h = 0; h < 3 * faces; ++h)
-    if(tt.twin[h] == Torus_triangulation::no_twin)
-      return Outcome::holes_or_not_a_triangulation;
+  if(open.size() != 0)
+    return Outcome::holes_or_not_a_triangulation;
   // Orientation across each edge: the two faces must run along it in opposite directions.
   std::vector<unsigned char> reverse(faces, 0), seen(faces, 0);
   std::vector<std::uint32_t> stack;
