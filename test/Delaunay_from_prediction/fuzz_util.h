@@ -99,8 +99,11 @@ struct Case
 inline std::string describe(const Case& c)
 {
   std::ostringstream s;
-  s << "entry=" << entry_names[c.entry] << " kernel=" << kernel_names[c.kernel] << " output="
-    << output_names[c.output] << " points=" << point_family_names[c.point_family]
+  const char* const move_names[] = {"little", "a_lot", "onto_another"}; // the periodic entry's `output`
+  s << "entry=" << entry_names[c.entry] << " kernel=" << kernel_names[c.kernel]
+    << (c.entry == E_PERIODIC ? " moves=" : " output=")
+    << (c.entry == E_PERIODIC ? move_names[c.output] : output_names[c.output])
+    << " points=" << point_family_names[c.point_family]
     << " prediction=" << pred_family_names[c.pred_family] << " n=" << c.pts.size() << " faces=" << c.faces.size();
   if(c.strategy >= 0) s << " strategy=" << c.strategy;
   if(c.max_flips >= 0) s << " max_flips=" << c.max_flips;
