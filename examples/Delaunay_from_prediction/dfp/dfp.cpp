@@ -276,8 +276,10 @@ Prediction read_prediction(const std::string& file, std::size_t n)
   return p;
 }
 
-// CGAL's own build from scratch: the reference of --check, and what --cgal runs.
-void build_with_cgal(const std::vector<Point>& points, DT& dt)
+// CGAL's own build from scratch (range insertion, plane or torus): the reference of --check,
+// and what --cgal runs.
+template <class Triangulation>
+void build_with_cgal(const std::vector<Point>& points, Triangulation& dt)
 {
   std::vector<std::pair<Point, std::size_t>> indexed;
   indexed.reserve(points.size());
@@ -321,18 +323,8 @@ bool equals_cgal_build(const std::vector<Point>& points, const DT& dt)
   return geometry_of(dt) == geometry_of(reference);
 }
 
-// The periodic counterparts, for --periodic: CGAL's periodic build, the comparison as faces of
-// (point, offset) corners, and the .ele output with the offsets.
-void build_with_cgal(const std::vector<Point>& points, Periodic_DT& t)
-{
-  std::vector<std::pair<Point, std::size_t>> indexed;
-  indexed.reserve(points.size());
-  for(std::size_t i = 0; i < points.size(); ++i)
-    indexed.emplace_back(points[i], i);
-  t.clear();
-  t.insert(indexed.begin(), indexed.end());
-}
-
+// The periodic counterparts, for --periodic: the comparison as faces of (point, offset)
+// corners, and the .ele output with the offsets.
 // Each triangle as its corners (x, y, x offset, y offset), rotated to start at its least corner.
 using Periodic_corner = std::array<double, 4>;
 std::vector<std::array<Periodic_corner, 3>> geometry_of(const Periodic_DT& t)

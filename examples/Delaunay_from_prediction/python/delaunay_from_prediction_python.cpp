@@ -502,7 +502,13 @@ std::pair<std::vector<std::int64_t>, std::vector<std::int64_t>> triangles_and_of
   return out;
 }
 
-std::vector<std::int64_t> triangles_of(const Periodic_DT& t) { return triangles_and_offsets(t).first; }
+std::vector<std::int64_t> triangles_of(const Periodic_DT& t)
+{
+  std::vector<std::int64_t> triangles;
+  for(const DFP::Indexed_periodic_triangle& triangle : DFP::indexed_periodic_triangles(t))
+    triangles.insert(triangles.end(), triangle.vertices.begin(), triangle.vertices.end());
+  return triangles;
+}
 
 // ---------------------------------------------------------------------------------------------
 // scipy.spatial.Delaunay's attributes, read off the triangulation (dimension 2; below it there
