@@ -372,6 +372,7 @@ Statistics delaunay_from_prediction(const PointRange& points, const FaceRange& f
     std::vector<typename P2DT2::Vertex_handle> vertices(n);
     for(std::size_t i = 0; i < n; ++i) {
       vertices[i] = t.tds().create_vertex();
+      vertices[i]->clear_offset(); // the default constructor leaves the offset flag indeterminate
       vertices[i]->set_point(*pointers[i]);
       internal::set_index_info(vertices[i], order.old_index(std::uint32_t(i)));
     }
