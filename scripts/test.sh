@@ -5,7 +5,8 @@
 # CGAL's), the tool dfp on files and the Python module (pytest), in Release, in build/ at the
 # repository root. Installs the build dependencies with apt-get if they are missing.
 # With --all it builds and runs every test (the other suites, the differential fuzzer's fixed
-# cases, each public header alone, the compile-time refusals) and type-checks the benchmarks
+# cases, each public header alone, the compile-time refusals; the suites other than core at -O1,
+# see test/Delaunay_from_prediction/CMakeLists.txt) and type-checks the benchmarks
 # (-fsyntax-only: no programs; build them with cmake -DDFP_BUILD_BENCHMARKS=ON
 # -DDFP_BENCHMARKS_SYNTAX_ONLY=OFF), in the same build/: what CI runs. After a quick run it compiles only what is missing.
 # Usage: scripts/test.sh [--all]   (from any directory)

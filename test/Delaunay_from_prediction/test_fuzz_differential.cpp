@@ -1157,6 +1157,11 @@ void run_periodic(Checker& ck, const Case& c)
           ck.fail(std::string("periodic:") + what + ":info", "a vertex's info() is not its point's smallest index");
           break;
         }
+    // Cleared on every vertex, as CGAL leaves it after its own operations: indeterminate, it
+    // would be read by copying the triangulation (UBSan halts on that load here).
+    for(auto v = t.tds().vertices().begin(); v != t.tds().vertices().end() && ck.failure.empty(); ++v)
+      if(v->get_offset_flag())
+        ck.fail(std::string("periodic:") + what + ":offset_flag", "a vertex's offset flag is set");
   };
   // f(the case's named parameters, those it gives only), f(tag, np) for both tags.
   auto with_parameters = [&](auto f) {

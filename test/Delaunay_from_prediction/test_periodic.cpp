@@ -131,10 +131,13 @@ DFP::Statistics check_prediction(const XYs& xy, const Faces& faces, const CGAL::
     const DFP::Statistics s = with_concurrency([&](auto tag) { return DFP::delaunay_from_prediction<decltype(tag)>(points, faces, t); });
     DFP_CHECK(t.is_valid());
     DFP_CHECK_MSG(result_of(t, xy) == expected, s);
-    // info() is the point's index (the first of equal points) on every vertex, copies included.
-    for(auto v = t.tds().vertices().begin(); v != t.tds().vertices().end(); ++v)
+    // info() is the point's index (the first of equal points) on every vertex, copies included;
+    // the offset flag is cleared, as CGAL leaves it after its own operations.
+    for(auto v = t.tds().vertices().begin(); v != t.tds().vertices().end(); ++v) {
       DFP_CHECK(v->info() < xy.size() && xy[v->info()].x == CGAL::to_double(v->point().x()) &&
                 xy[v->info()].y == CGAL::to_double(v->point().y()));
+      DFP_CHECK(!v->get_offset_flag());
+    }
     if(!have_first) {
       first = s;
       have_first = true;
@@ -169,6 +172,8 @@ DFP::Statistics check_moves(const XYs& before, const XYs& after, const CGAL::Iso
     const DFP::Statistics s = with_concurrency([&](auto tag) { return DFP::make_delaunay<decltype(tag)>(t); });
     DFP_CHECK(t.is_valid());
     DFP_CHECK_MSG(result_of(t, after) == expected, s);
+    for(auto v = t.tds().vertices().begin(); v != t.tds().vertices().end(); ++v)
+      DFP_CHECK(!v->get_offset_flag()); // cleared, as after CGAL's own operations
     if(was_one_cover && t.is_1_cover()) {
       std::size_t seen = 0;
       for(auto v = t.unique_vertices_begin(); v != t.unique_vertices_end(); ++v, ++seen)

@@ -178,6 +178,7 @@ void build_as_cgal(const std::vector<typename P2DT2::Point>& points, P2DT2& t, S
 {
   t.clear();
   t.insert(points.begin(), points.end());
+  clear_vertex_offsets(t);
   stats.points_reinserted = points.size();
   stats.duplicate_points = points.size() - t.number_of_vertices();
   if constexpr(has_index_info<typename P2DT2::Vertex>::value) {
@@ -230,6 +231,7 @@ void rebuild_in_place(P2DT2& t, Statistics& stats)
   for(auto v = build.tds().vertices().begin(); v != build.tds().vertices().end(); ++v)
     copy_info(vertices[lookup(v->point())], v);
   t.swap(build);
+  clear_vertex_offsets(t);
   stats.outcome = Outcome::not_1_sheeted;
 }
 
@@ -372,7 +374,6 @@ Statistics delaunay_from_prediction(const PointRange& points, const FaceRange& f
     std::vector<typename P2DT2::Vertex_handle> vertices(n);
     for(std::size_t i = 0; i < n; ++i) {
       vertices[i] = t.tds().create_vertex();
-      vertices[i]->clear_offset(); // the default constructor leaves the offset flag indeterminate
       vertices[i]->set_point(*pointers[i]);
       internal::set_index_info(vertices[i], order.old_index(std::uint32_t(i)));
     }

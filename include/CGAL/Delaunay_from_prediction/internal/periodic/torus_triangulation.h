@@ -815,6 +815,17 @@ Outcome set_offsets_by_minimum_image(Torus_triangulation& tt, const Torus_geomet
   return Outcome::ok;
 }
 
+// Clears every vertex's offset, as CGAL leaves it after each of its own operations. CGAL's
+// default vertex constructor leaves the offset flag indeterminate (and its insert_first()
+// creates vertices with it), so that copying the triangulation would read an indeterminate
+// bool; every periodic triangulation the package hands back goes through this.
+template <class P2T2>
+void clear_vertex_offsets(P2T2& t)
+{
+  for(auto v = t.tds().vertices().begin(); v != t.tds().vertices().end(); ++v)
+    v->clear_offset();
+}
+
 // Replaces the faces of the periodic triangulation `t` by those of `tt` (a Delaunay
 // triangulation of the torus that surely_one_sheeted() accepted), on the vertex objects
 // `vertices` (indexed as tt's vertices), as a 1-sheeted covering: the vertex objects, their
@@ -842,6 +853,7 @@ void write_periodic_triangulation(const Torus_triangulation& tt, const std::vect
       vertices[tt.vertex[3 * f + std::size_t(i)]]->set_face(face[f]);
     }
   tds.set_dimension(2);
+  clear_vertex_offsets(t);
 }
 
 // Whether every face's offsets span at most one period per coordinate (CGAL's face base holds
