@@ -140,11 +140,13 @@ Statistics delaunay_from_prediction(const PointRange& points, const FaceRange& f
     return internal::with_levels_rebuilt(
         dt, [&](auto& level0) { return delaunay_from_prediction<ConcurrencyTag>(points, faces, level0, np); });
   } else { // not instantiated for a hierarchy
-    auto point_at = std::begin(points);
+    auto point_at = internal::point_iterator<typename DT::Point>(points);
     const std::size_t n = std::size_t(std::distance(std::begin(points), std::end(points)));
     const internal::Pipeline_options options = internal::read_pipeline_options(np, n, parallel);
     auto visitor = parameters::choose_parameter<Default_visitor>(parameters::get_parameter(np, internal_np::visitor));
-    internal::Index_triples_stages<DT, decltype(point_at), FaceRange> stages(
+    internal::Index_triples_stages<DT, decltype(point_at), FaceRange,
+                                   internal::Compiled_paths_of<NamedParameters, parallel>>
+        stages(
         point_at, n, faces, std::size_t(std::distance(std::begin(faces), std::end(faces))), dt, options);
     return internal::run_prediction_pipeline(stages, options, internal::unwrap_visitor(visitor));
   } // not a hierarchy
@@ -227,7 +229,8 @@ Statistics make_delaunay(Triangulation& tr, const NamedParameters& np = paramete
   } else { // not instantiated for a hierarchy
     const internal::Pipeline_options options = internal::read_pipeline_options(np, tr.number_of_vertices(), parallel);
     auto visitor = parameters::choose_parameter<Default_visitor>(parameters::get_parameter(np, internal_np::visitor));
-    internal::In_place_stages<Triangulation> stages(tr, options);
+    internal::In_place_stages<Triangulation, internal::Compiled_paths_of<NamedParameters, parallel>> stages(tr,
+                                                                                                      options);
     return internal::run_prediction_pipeline(stages, options, internal::unwrap_visitor(visitor));
   } // not a hierarchy
 }

@@ -9,7 +9,9 @@
 // triples at n >= 5000 are rejected by it, and fall back without it with strategy(flips) (the
 // default strategy may repair them locally instead); chaining with CGAL's parameters, and the
 // package's chained as CGAL's are (`max_flips(0).strategy(s)`); visitor(v): every stage seen
-// in begin/end pairs, in the pipeline's order; tuning(t): its thresholds are read.
+// in begin/end pairs, in the pipeline's order; tuning(t): its thresholds are read;
+// strategy<S>() (a strategy known at compile time): the strategies each form of the parameter
+// compiles, and the same result and statistics as strategy(S), alone and chained.
 
 #include <CGAL/Delaunay_from_prediction_2.h> // first: the header is self-contained
 
@@ -17,9 +19,11 @@
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
+#include <cstdint>
 #include <functional>
 #include <list>
 #include <string>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -480,9 +484,86 @@ void test_tuning(CGAL::Random& rng)
   });
 }
 
+// What each form of the named parameter `strategy` compiles (Compiled_paths), and strategy<S>()
+// against strategy(S): the same triangulation (CGAL's) and the same statistics, for both
+// entry points, alone and chained.
+template <DFP::Strategy S>
+void check_strategy_known_at_compile_time(const Points& points, const Faces& faces, CGAL::Random& rng)
+{
+  namespace I = DFP::internal;
+  static_assert(I::strategies_compiled<decltype(NP::strategy<S>())>() == I::strategy_bit(S));
+  static_assert(I::strategies_compiled<decltype(NP::max_flips(10).template strategy<S>())>() == I::strategy_bit(S));
+  Scope s(std::string("strategy ") + std::to_string(int(S)));
+  auto same = [](const DFP::Statistics& a, const DFP::Statistics& b) {
+    DFP_CHECK_MSG(a.outcome == b.outcome && a.fell_back == b.fell_back && a.flips == b.flips &&
+                      a.faces_certified == b.faces_certified && a.points_reinserted == b.points_reinserted,
+                  to_string(a.outcome) << " / " << to_string(b.outcome) << ", flips " << a.flips << " / " << b.flips);
+  };
+  {
+    DT known, given;
+    const DFP::Statistics a = DFP::delaunay_from_prediction(points, faces, known, NP::strategy<S>());
+    const DFP::Statistics b = DFP::delaunay_from_prediction(points, faces, given, NP::strategy(S));
+    check_is_cgal_delaunay(known, points);
+    same(a, b);
+    DT chained;
+    const DFP::Statistics c = DFP::delaunay_from_prediction(
+        points, faces, chained, NP::strategy<S>(CGAL::parameters::verbose(false)).max_flips(std::size_t(-1)));
+    check_is_cgal_delaunay(chained, points);
+    const DFP::Statistics d = DFP::delaunay_from_prediction(
+        points, faces, given, NP::max_flips(std::size_t(-1)).strategy(S));
+    same(c, d);
+  }
+  {
+    Points moved = points;
+    DT known, given;
+    Handles<DT> known_handles, given_handles;
+    build(known, points, known_handles);
+    build(given, points, given_handles);
+    for(std::size_t i = 0; i < moved.size(); i += 7) {
+      moved[i] = Point(points[i].x() + rng.get_double(-0.01, 0.01), points[i].y() + rng.get_double(-0.01, 0.01));
+      known_handles[i]->set_point(moved[i]);
+      given_handles[i]->set_point(moved[i]);
+    }
+    const DFP::Statistics a = DFP::make_delaunay(known, NP::strategy<S>());
+    const DFP::Statistics b = DFP::make_delaunay(given, NP::strategy(S));
+    check_is_cgal_delaunay(known, moved);
+    check_is_cgal_delaunay(given, moved);
+    // The order of the repair's work follows the face objects' addresses, which differ between
+    // the two triangulations: the flips counted may differ, not the outcome.
+    DFP_CHECK_MSG(a.outcome == b.outcome && a.fell_back == b.fell_back,
+                  to_string(a.outcome) << " / " << to_string(b.outcome));
+  }
+}
+
+void test_strategy_known_at_compile_time(CGAL::Random& rng)
+{
+  namespace I = DFP::internal;
+  using Default = DFP::parameters::Default_named_parameters;
+  static_assert(I::strategies_compiled<Default>() == I::strategy_bit(DFP::Strategy::automatic));
+  static_assert(I::strategies_compiled<decltype(NP::max_flips(10))>() == I::strategy_bit(DFP::Strategy::automatic));
+  static_assert(I::strategies_compiled<decltype(NP::strategy(DFP::Strategy::flips))>() == ~std::uint32_t(0));
+  static_assert(I::strategies_compiled<decltype(NP::max_flips(10).strategy(DFP::Strategy::flips))>() ==
+                ~std::uint32_t(0));
+  static_assert(std::is_convertible<DFP::Strategy_constant<DFP::Strategy::section_3>, DFP::Strategy>::value);
+  const Points points = to_points<K>(uniform_points(1500, rng));
+  const Faces faces = flipped_delaunay_faces<K>(points, 30, rng);
+  using St = DFP::Strategy;
+  check_strategy_known_at_compile_time<St::automatic>(points, faces, rng);
+  check_strategy_known_at_compile_time<St::flips>(points, faces, rng);
+  check_strategy_known_at_compile_time<St::carve>(points, faces, rng);
+  check_strategy_known_at_compile_time<St::t_division>(points, faces, rng);
+  check_strategy_known_at_compile_time<St::regions>(points, faces, rng);
+  check_strategy_known_at_compile_time<St::rebuild>(points, faces, rng);
+  check_strategy_known_at_compile_time<St::spanning_tree>(points, faces, rng);
+  check_strategy_known_at_compile_time<St::section_3>(points, faces, rng);
+  check_strategy_known_at_compile_time<St::theorem_4_1>(points, faces, rng);
+  check_strategy_known_at_compile_time<St::theorem_5_4>(points, faces, rng);
+}
+
 int main()
 {
   CGAL::Random rng(8080);
+  DFP_RUN(test_strategy_known_at_compile_time(rng));
   DFP_RUN(test_visitor(rng));
   DFP_RUN(test_tuning(rng));
   DFP_RUN(test_max_flips(rng));

@@ -7,9 +7,10 @@
 // offset) triples and by covering (1- or 9-sheeted), with Epick and Epeck and every
 // concurrency: uniform points, lattices (every point co-circular), points at the domain's sides
 // and corners, moves that cross the sides, few and clustered points (9-sheeted), duplicates,
-// wrong predictions, other domains, Kinetic_Delaunay_triangulation_2 on the torus and
-// indexed_periodic_triangles(). make_delaunay() keeps the vertex handles and their info()
-// when the result is 1-sheeted; bad input throws and leaves the triangulation as it was.
+// wrong predictions, other domains, Kinetic_Delaunay_triangulation_2 on the torus,
+// indexed_periodic_triangles(), and each stage reported to a visitor at most once.
+// make_delaunay() keeps the vertex handles and their info() when the result is 1-sheeted; bad
+// input throws and leaves the triangulation as it was.
 
 #include "test_util.h"
 
@@ -24,8 +25,10 @@
 #include <CGAL/Triangulation_data_structure_2.h>
 #include <CGAL/Triangulation_vertex_base_with_info_2.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <map>
 #include <tuple>
@@ -672,6 +675,65 @@ void kinetic_frames()
   }
 }
 
+// Each stage is reported to the visitor at most once, begun and ended in turn, never nested:
+// for index triples and for make_delaunay(), on a triangulation that is certified, one that
+// needs untangling and Lawson's flips, and one that CGAL rebuilds.
+struct Stage_log
+{
+  std::vector<DFP::Stage> begun, ended;
+  bool nested = false;
+  void stage_begin(DFP::Stage s)
+  {
+    nested = nested || begun.size() != ended.size();
+    begun.push_back(s);
+  }
+  void stage_end(DFP::Stage s) { ended.push_back(s); }
+  void check(const DFP::Statistics& st) const
+  {
+    DFP_CHECK_MSG(!nested && begun == ended && !begun.empty(), st);
+    std::vector<DFP::Stage> sorted = begun;
+    std::sort(sorted.begin(), sorted.end());
+    DFP_CHECK_MSG(std::adjacent_find(sorted.begin(), sorted.end()) == sorted.end(), st);
+    DFP_CHECK_MSG(std::count(begun.begin(), begun.end(), DFP::Stage::rebuild) == (st.fell_back ? 1 : 0), st);
+  }
+};
+
+template <class K>
+void stages_reported_once()
+{
+  CGAL::Random rng(4611);
+  const auto unit = rectangle<K>(0, 0, 1, 1);
+  const XYs xy = uniform_points(3000, rng);
+  const double spacing = 1 / std::sqrt(3000.);
+  for(double sigma : {0.0, 0.01, 0.05, 0.5}) {
+    Scope s("moves of ", sigma, " spacing");
+    const XYs after = sigma == 0 ? xy : moved(xy, sigma * spacing, rng);
+    {
+      Stage_log log;
+      Periodic_with_info<K> t(unit);
+      const std::vector<typename K::Point_2> points = to_points<K>(after);
+      const DFP::Statistics st =
+          DFP::delaunay_from_prediction(points, faces_of_build<K>(xy, unit), t, DFP::parameters::visitor(std::ref(log)));
+      log.check(st);
+      DFP_CHECK(result_of(t, after) == result_of(cgal_build<K>(after, unit), after));
+    }
+    {
+      Stage_log log;
+      Periodic_with_info<K> t = cgal_build<K>(xy, unit);
+      std::map<std::pair<double, double>, std::size_t> index;
+      for(std::size_t i = 0; i < xy.size(); ++i)
+        index[{xy[i].x, xy[i].y}] = i;
+      for(auto v = t.tds().vertices().begin(); v != t.tds().vertices().end(); ++v) {
+        const std::size_t i = index[{CGAL::to_double(v->point().x()), CGAL::to_double(v->point().y())}];
+        v->set_point(make_point<K>(after[i].x, after[i].y));
+      }
+      const DFP::Statistics st = DFP::make_delaunay(t, DFP::parameters::visitor(std::ref(log)));
+      log.check(st);
+      DFP_CHECK(result_of(t, after) == result_of(cgal_build<K>(after, unit), after));
+    }
+  }
+}
+
 } // namespace
 
 int main()
@@ -687,6 +749,7 @@ int main()
   DFP_RUN(usable_after_repair());
   DFP_RUN(random_cases());
   DFP_RUN(kinetic_frames<CGAL::Epick>());
+  DFP_RUN(stages_reported_once<CGAL::Epick>());
   DFP_RUN(uniform_points_and_moves<CGAL::Epeck>());
   DFP_RUN(lattices<CGAL::Epeck>());
   DFP_RUN(few_and_clustered_points<CGAL::Epeck>());

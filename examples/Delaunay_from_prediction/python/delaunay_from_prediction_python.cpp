@@ -875,8 +875,10 @@ struct Delaunay
 const char* const module_doc = R"doc(Delaunay triangulations from predictions (CGAL package Delaunay_from_prediction).
 
 Every function takes points as an (n, 2) array of float64 (anything numpy converts is
-accepted and converted) and indices as integer arrays (any integer dtype); results are numpy
-int64 arrays of point indices. The exact predicates of CGAL's
+accepted and converted) and indices as integer arrays (any integer dtype). The functions and
+Triangulation return numpy int64 arrays of point indices; Delaunay's arrays (simplices,
+neighbors, offsets, convex_hull, vertex_neighbor_vertices, coplanar, vertex_to_simplex and
+find_simplex's result) are np.intc, as scipy.spatial.Delaunay's. The exact predicates of CGAL's
 Exact_predicates_inexact_constructions_kernel decide everything, so the results are exact:
 a Delaunay triangulation is the one CGAL's Delaunay_triangulation_2 builds from the same
 points (co-circular ties broken by CGAL's symbolic perturbation), whatever the prediction.
@@ -889,7 +891,7 @@ released while the C++ code runs.
     t = dfp.Triangulation(points)
     t.move(new_points)          # repaired in place
     t.triangles                 # (k, 3) int64, counterclockwise
-    d = dfp.Delaunay(points)    # scipy.spatial.Delaunay's attributes: d.simplices, d.neighbors, ...
+    d = dfp.Delaunay(points)    # scipy.spatial.Delaunay's attributes, np.intc: d.simplices, d.neighbors, ...
     d.find_simplex(xi); d.move(new_points)
 )doc";
 

@@ -148,6 +148,7 @@ public:
   Kinetic_Delaunay_triangulation_2() = default;
   /// an empty triangulation of no points, whose triangulations are made with the traits of `dt`
   /// (and, for a periodic triangulation, its domain); `dt` is only read.
+  /// \param dt a triangulation whose traits (and domain) are used.
   explicit Kinetic_Delaunay_triangulation_2(const DT& dt) : dt_(Access::empty_like(dt)) {}
   // Not copyable: the vertex handles by index point into the triangulation held.
   Kinetic_Delaunay_triangulation_2(const Kinetic_Delaunay_triangulation_2&) = delete;
@@ -157,6 +158,10 @@ public:
   /// `delaunay_from_prediction()`, using `faces` as the prediction (an empty range: none), and
   /// takes it. Its named parameters are those of `delaunay_from_prediction()`. On an exception
   /// (`Invalid_prediction` for a malformed prediction or point), `*this` is unchanged.
+  /// \param points the points; point index `i` is `points[i]`.
+  /// \param faces the predicted triangles, index triples into `points`.
+  /// \param np optional named parameters, as for `delaunay_from_prediction()`.
+  /// \returns the statistics of `delaunay_from_prediction()`.
   template <class ConcurrencyTag = Sequential_tag, class PointRange, class FaceRange,
             class NamedParameters = parameters::Default_named_parameters>
   Statistics build(const PointRange& points, const FaceRange& faces,
@@ -170,6 +175,8 @@ public:
   }
 
   /// builds the Delaunay triangulation of `points` from scratch (no prediction).
+  /// \param points the points; point index `i` is `points[i]`.
+  /// \returns the statistics of the build.
   template <class ConcurrencyTag = Sequential_tag, class PointRange>
   Statistics build(const PointRange& points)
   {
@@ -181,6 +188,8 @@ public:
   /// its point), for example one built from a predicted graph. `dt` is left empty.
   /// Throws `Invalid_prediction`, and changes nothing, if an `info()` is out of range, is not the
   /// index of the vertex's point, or if a point is at no vertex.
+  /// \param dt the triangulation taken (left empty).
+  /// \param points the points it triangulates; point index `i` is `points[i]`.
   template <class PointRange>
   void assign(DT& dt, const PointRange& points)
   {
@@ -203,6 +212,8 @@ public:
   /// Delaunay triangulation of the new points: in place, or rebuilt, by the rule in the class
   /// description. `points` must have `number_of_points()` points. The named parameters go to
   /// `make_delaunay()`, and to `delaunay_from_prediction()` for a rebuild.
+  /// \param points the new points; point index `i` moves to `points[i]`.
+  /// \param np optional named parameters, as for `make_delaunay()`.
   /// \returns the statistics of the call that did the work.
   template <class ConcurrencyTag = Sequential_tag, class PointRange,
             class NamedParameters = parameters::Default_named_parameters>
@@ -238,12 +249,16 @@ public:
   }
 
   /// the triangulation: `v->info()` is the (smallest) index of `v`'s point.
+  /// \returns the triangulation.
   const DT& triangulation() const { return dt_; }
 
   /// `n`, the number of point indices (0 before `build()`).
+  /// \returns the number of point indices.
   std::size_t number_of_points() const { return vertex_of_.size(); }
 
   /// the vertex of point index `i` (shared by equal points).
+  /// \param i a point index.
+  /// \returns the vertex of point `i`.
   /// \pre `i < number_of_points()`
   Vertex_handle vertex(std::size_t i) const
   {
@@ -252,13 +267,17 @@ public:
   }
 
   /// the point of index `i`.
+  /// \param i a point index, less than `number_of_points()`.
+  /// \returns the point of index `i`.
   const Point& point(std::size_t i) const { return vertex(i)->point(); }
 
   /// whether some indices share a vertex (equal points).
+  /// \returns `true` if some indices share a vertex.
   bool has_shared_vertices() const { return shares_vertices_; }
 
   /// whether the last `move()` rebuilt the triangulation (points merged or split) instead of
   /// repairing it in place.
+  /// \returns `true` if the last `move()` rebuilt the triangulation.
   bool last_move_rebuilt() const { return last_move_rebuilt_; }
 
 private:

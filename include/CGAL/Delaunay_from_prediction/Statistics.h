@@ -18,9 +18,17 @@ namespace Delaunay_from_prediction {
 /*!
 \ingroup PkgDelaunayFromPredictionRef
 Exception thrown for structurally malformed input: an index out of range (a negative signed
-index included), a face repeating an index, a non-finite point coordinate, or, for
-`make_delaunay()`, two vertices at the same point. `what()` names the offending face, index,
-point or vertices. When it is thrown, the caller's containers and triangulation are unchanged.
+index included), a face repeating an index, an edge joining a point to itself, a non-finite point
+coordinate, or, for `make_delaunay()`, two vertices at the same point. Also: for
+`Kinetic_Delaunay_triangulation_2::move()`, another number of points than the triangulation
+has; for the periodic overloads (`periodic_2.h`), a point outside the domain or, with a
+floating-point number type (`Epick`), a period outside \f$[2^{-500}, 2^{500}]\f$; for
+`Imprecise_points_2`, radii and centres of different counts, a negative or non-finite radius, an
+instance of another size; and inputs too large for the 32-bit indices of
+`delaunay_from_spanning_graph()`, the proximity graphs, `brio_dc_delaunay()`,
+`Imprecise_points_2` and `prediction_measures()` (the user manual, "Limitations", lists the
+limits). `what()` names the offending face, index, point or vertices. When it is thrown, the
+caller's containers and triangulation are unchanged.
 */
 class Invalid_prediction : public std::invalid_argument
 {
@@ -100,6 +108,7 @@ enum class Outcome {
 returns the sentence that explains `outcome`: empty for `Outcome::ok`, for example `"a face is
 degenerate (its points are collinear or equal)"` for `Outcome::degenerate_face`.
 \param outcome the outcome.
+\returns the sentence, a string literal.
 */
 inline const char* to_string(Outcome outcome)
 {

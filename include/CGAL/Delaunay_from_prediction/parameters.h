@@ -15,6 +15,7 @@
 #include <CGAL/Named_function_parameters.h>
 
 #include <cstddef>
+#include <type_traits>
 
 namespace CGAL {
 namespace Delaunay_from_prediction {
@@ -127,6 +128,16 @@ enum class Strategy {
 
 /*!
 \ingroup PkgDelaunayFromPredictionRef
+A strategy known at compile time, given by `parameters::strategy<S>()`: a call with it
+compiles the code of `S` only. A call without the named parameter `strategy` compiles the code
+of `Strategy::automatic` only (and its fallback, the rebuild); a call given a `Strategy`
+value, known at run time, compiles every strategy. It converts to `Strategy`.
+*/
+template <Strategy S>
+using Strategy_constant = std::integral_constant<Strategy, S>;
+
+/*!
+\ingroup PkgDelaunayFromPredictionRef
 The order in which `Imprecise_points_2` inserts the disks, in its preprocessing and in every
 instance (named parameter `disk_order`).
 */
@@ -146,7 +157,7 @@ How `split_delaunay()` computes the two triangulations (named parameter `split_m
 give exactly \cgal's triangulations of the two parts.
 */
 enum class Split_method {
-  /// the default: currently `ordered`, the faster on every input measured (see the user manual).
+  /// the default: `ordered`, the faster on every input measured (see the user manual).
   automatic,
   /// each part inserted, point by point, in the order of the input triangulation's vertices
   /// when that order is spatially coherent (a triangulation built by \cgal's range insertion
@@ -176,14 +187,15 @@ struct Tuning
   /// (bench_delaunay_from_prediction's t-division cases, 1e5 and 1e6 points); tests raise it to reach the division on small inputs.
   double t_division_budget_factor = 1;
   /// with `CGAL::Parallel_tag`, a build from scratch is made in blocks only from this many
-  /// threads: on 2 threads the build in blocks took 1.1-1.5 times the sequential build on
-  /// flat arrays (results/rebuild_engine_ab_1e6.txt, 1e6 points), and on one thread it costs
-  /// 14% more than the sequential build on the triangulation (bench_region_build). 4 is a
-  /// choice, not a measurement: no machine with more than 2 cores was available.
+  /// threads: on 2 threads at 1e6 points the build in blocks measured 1.22-1.66 times as fast
+  /// as CGAL's build on the rebuilt rows and the sequential build on flat arrays 1.52-1.66
+  /// (results/rebuild_flat_arrays_vs_faces_1e6.txt), and on one thread the build in 4 blocks
+  /// took 0.6877 s where CGAL's build took 0.6514 s (results/region_build_stages_1thread_1e6.txt).
+  /// 4 is a choice, not a measurement: no machine with more than 2 cores was available.
   std::size_t min_threads_for_blocks = 4;
   /// ... and only in blocks of at least this many points (two or more blocks): smaller blocks
   /// make the seams' share grow; at 1e6 points on 2 threads 4 blocks gave 1.58x the sequential
-  /// build, 2 blocks 1.23x, 8 blocks 1.51x (bench_region_build). Tests lower it to build in
+  /// build, 2 blocks 1.23x, 8 blocks 1.51x (results/region_build_blocks_1e6.txt). Tests lower it to build in
   /// blocks at small sizes.
   std::size_t min_points_per_block = std::size_t(1) << 15;
   /// `Strategy::theorem_5_4`: the first \f$j\f$ of the guesses \f$b = 2^{2^j}\f$ of
@@ -235,6 +247,14 @@ struct Named_parameters : CGAL::Named_function_parameters<T, Tag, Base>
   CGAL_DFP_CHAINED_PARAMETER(screen_prediction)
   CGAL_DFP_CHAINED_PARAMETER(strategy)
   CGAL_DFP_CHAINED_PARAMETER(region_size)
+  /// adds the named parameter `strategy` with the strategy `S` known at compile time: the
+  /// call compiles the code of `S` only (see `Strategy_constant`).
+  /// \returns the chain with the parameter added.
+  template <Strategy S>
+  Named_parameters<Strategy_constant<S>, internal_np::strategy_t, Chain> strategy() const
+  {
+    return Named_parameters<Strategy_constant<S>, internal_np::strategy_t, Chain>(Strategy_constant<S>(), *this);
+  }
   CGAL_DFP_CHAINED_PARAMETER(disk_order)
   CGAL_DFP_CHAINED_PARAMETER(split_method)
   CGAL_DFP_CHAINED_PARAMETER(sample_probability)
@@ -303,6 +323,27 @@ strategy(const T& v, const CGAL::Named_function_parameters<A, B, C>& np)
 {
   return Named_parameters<T, internal_np::strategy_t,
                                          CGAL::Named_function_parameters<A, B, C>>(v, np);
+}
+
+/// chooses the strategy `S` at compile time: the call compiles the code of `S` only, where
+/// `strategy(S)` compiles every strategy (see `Strategy_constant`).
+/// \tparam S a `Strategy`.
+/// \returns the named parameter `strategy` with value `Strategy_constant<S>`.
+template <Strategy S>
+Named_parameters<Strategy_constant<S>, internal_np::strategy_t> strategy()
+{
+  return Named_parameters<Strategy_constant<S>, internal_np::strategy_t>(Strategy_constant<S>());
+}
+/// same, chained in front of other named parameters.
+/// \tparam S a `Strategy`.
+/// \param np the named parameters to chain after it.
+/// \returns the chain `Strategy_constant<S>`, then `np`.
+template <Strategy S, class A, class B, class C>
+Named_parameters<Strategy_constant<S>, internal_np::strategy_t, CGAL::Named_function_parameters<A, B, C>>
+strategy(const CGAL::Named_function_parameters<A, B, C>& np)
+{
+  return Named_parameters<Strategy_constant<S>, internal_np::strategy_t, CGAL::Named_function_parameters<A, B, C>>(
+      Strategy_constant<S>(), np);
 }
 
 /// sets the number of faces t of a region of `Strategy::t_division` (default: n/32 for n

@@ -137,7 +137,7 @@ private:
 // flips repair the failing ones within the flip budget; the result must surely be what CGAL
 // keeps as a 1-sheeted covering. Outcome::ok when `tt` is then the Delaunay triangulation CGAL
 // builds; otherwise why the prediction is given up. `certify` is the stage the in-circle tests
-// are reported as.
+// are reported as (Stage::certify).
 template <class Gt, class Runner>
 Outcome certify_and_flip(Torus_triangulation& tt, const Torus_geometry<Gt>& geometry, const Pipeline_options& options,
                          Stage certify, Statistics& stats, const Runner& run)
@@ -255,8 +255,11 @@ shortest images do not close, flat, repeated or overlapping faces, holes, points
 faces that do not cover the domain exactly once, tangles that neither a flip nor a reinsertion
 undoes, more flips than the budget. Points too few or
 too clustered for CGAL to keep a 1-sheeted covering (or so close to CGAL's criterion that its
-outcome is in doubt: no empty circle may be wider than about 0.41 periods) are built by CGAL too
-(`Outcome::not_1_sheeted`), which may give a 9-sheeted covering.
+outcome is in doubt: the diameter of every Delaunay face's circumcircle, the widest circle empty
+of the points, must be below \f$\sqrt{0.166/8} \approx 0.144\f$ periods) are built by CGAL too
+(`Outcome::not_1_sheeted`), which may give a 9-sheeted covering. The stages index points and
+half-edges on 32 bits: from \f$2^{32} - 1\f$ points or \f$(2^{32} - 1)/3\f$ faces the faces are
+validated, then ignored, and CGAL builds the triangulation (`Outcome::too_many_indices`).
 
 \tparam ConcurrencyTag `CGAL::Sequential_tag` (the default), `CGAL::Parallel_tag` or
         `CGAL::Parallel_if_available_tag`: with `CGAL::Parallel_tag` the in-circle tests of the
@@ -293,10 +296,11 @@ outcome is in doubt: no empty circle may be wider than about 0.41 periods) are b
     \cgalParamDefault{`Strategy::automatic`}
   \cgalParamNEnd
   \cgalParamNBegin{visitor}
-    \cgalParamDescription{as for the Euclidean `delaunay_from_prediction()`; the stages are
-      `Stage::check`, `Stage::order` (points and faces in no spatial order renumbered along a
-      grid), `Stage::import` (with the in-circle tests), `Stage::untangle`, `Stage::flips` and
-      `Stage::rebuild`}
+    \cgalParamDescription{as for the Euclidean `delaunay_from_prediction()`: each stage reported
+      at most once, in this order: `Stage::check`, `Stage::order` (points and faces in no spatial
+      order renumbered along a grid), `Stage::import` (the faces paired, their offsets by the
+      minimum-image convention), `Stage::untangle`, `Stage::certify` (the in-circle test of every
+      edge), `Stage::flips`, and `Stage::rebuild` when CGAL builds the triangulation}
     \cgalParamType{see `Default_visitor`}
     \cgalParamDefault{`Default_visitor()`}
   \cgalParamNEnd
@@ -368,7 +372,7 @@ Statistics delaunay_from_prediction(const PointRange& points, const FaceRange& f
       return imported != Outcome::ok ? imported : internal::check_every_point_used(tt, n);
     });
   if(why == Outcome::ok)
-    why = internal::certify_and_flip(tt, geometry, options, Stage::import, stats, run);
+    why = internal::certify_and_flip(tt, geometry, options, Stage::certify, stats, run);
   if(why == Outcome::ok) {
     t.clear();
     std::vector<typename P2DT2::Vertex_handle> vertices(n);
@@ -408,13 +412,17 @@ for `delaunay_from_prediction()`.
 Vertex handles and their `info()` survive whenever `t` is a 1-sheeted covering before and after
 the call (`t.is_1_cover()`); face handles do not. When it is not (few points, or points too
 clustered: `Outcome::not_1_sheeted`), `t` becomes CGAL's build and its vertices are new objects,
-each with the `info()` of the vertex that was at its point.
+each with the `info()` of the vertex that was at its point. From \f$(2^{32} - 1)/8\f$ vertices
+(the stages index six half-edges a vertex on 32 bits) CGAL builds the triangulation
+(`Outcome::too_many_indices`).
 
 \tparam ConcurrencyTag as for `delaunay_from_prediction()`.
 \tparam Gt, Tds as for `delaunay_from_prediction()`.
 \tparam NamedParameters a sequence of named parameters: `max_flips`, `strategy` and `visitor`,
-        as for `delaunay_from_prediction()` (the reading of the faces and the in-circle tests are
-        reported as `Stage::certify`; there is no `Stage::order`).
+        as for `delaunay_from_prediction()`: the stages are `Stage::check`, `Stage::import` (the
+        faces read from \cgal's data structure with their offsets by the minimum-image
+        convention), `Stage::untangle`, `Stage::certify` (the in-circle test of every edge),
+        `Stage::flips` and `Stage::rebuild`, each at most once; there is no `Stage::order`.
 
 \param t the triangulation.
 \param np optional named parameters.
@@ -475,7 +483,7 @@ Statistics make_delaunay(Periodic_2_Delaunay_triangulation_2<Gt, Tds>& t,
     }
     const internal::Torus_geometry<Gt> geometry(t.geom_traits(), pointers);
     internal::Torus_triangulation tt;
-    why = run(Stage::certify, [&] {
+    why = run(Stage::import, [&] {
       internal::read_periodic_triangulation(t, [&](typename P2DT2::Vertex_handle v) { return vertex_index.of(v); }, tt);
       return internal::set_offsets_by_minimum_image(tt, geometry);
     });
@@ -516,6 +524,8 @@ when `t` was made by `delaunay_from_prediction()`. Linear in the size of `t`.
 
 \tparam Gt, Tds as for `delaunay_from_prediction()`; the vertices have an `info()` convertible to
         `std::size_t`.
+\param t the periodic triangulation.
+\returns its triangles, each once, as point indices and offsets.
 */
 template <class Gt, class Tds>
 std::vector<Indexed_periodic_triangle> indexed_periodic_triangles(const Periodic_2_Delaunay_triangulation_2<Gt, Tds>& t)

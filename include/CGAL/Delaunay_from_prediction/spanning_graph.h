@@ -124,7 +124,7 @@ Statistics delaunay_from_spanning_graph(const PointRange& points, const EdgeRang
 {
   internal::check_point_range_type<PointRange, typename DT::Point>();
   internal::check_edge_range_type<EdgeRange>();
-  (void)internal::runs_in_parallel<ConcurrencyTag>(); // checks the tag: sequential in this version (manual, "Parallel Mode")
+  (void)internal::runs_in_parallel<ConcurrencyTag>(); // checks the tag; runs sequentially (manual, "Parallel Mode")
   if constexpr(internal::is_triangulation_hierarchy<DT>::value) { // level 0, then the upper levels
     return internal::with_levels_rebuilt(
         dt, [&](auto& level0) { return delaunay_from_spanning_graph<ConcurrencyTag>(points, edges, level0, np); });

@@ -198,8 +198,7 @@ Statistics split_delaunay(const DT& dt, IsInFirst is_in_first, DT1& dt1, DT2& dt
   for(std::size_t k = 0; k < n; ++k)
     (part[k] == 0 ? first : second).push_back(k);
   // Each part in its insertion order, its points and vertices gathered first: read in that
-  // order from `dt`'s order they would be cache misses the insertion waits for (at 1e6 points
-  // in random memory order, 0.80 s instead of 0.5 s).
+  // order from `dt`'s order they would be cache misses the insertion waits for.
   auto insert_part = [&](auto& target, std::vector<std::size_t>& indices) {
     if(!in_order)
       internal::sort_along_grid(indices, [&](std::size_t k) -> const typename DT::Point& { return point[k]; }, true);

@@ -14,10 +14,10 @@ namespace Delaunay_from_prediction {
 
 /*!
 \ingroup PkgDelaunayFromPredictionRef
-A stage of the pipeline of `delaunay_from_prediction()` and `make_delaunay()`, told to the
-visitor (named parameter `visitor`) as it begins and ends. A call runs some of them, each at
-most once, one after the other (never nested); a stage that throws `Invalid_prediction` gets
-no `stage_end()`.
+A stage of the pipeline of `delaunay_from_prediction()` and `make_delaunay()` (in the plane and
+on the torus, `periodic_2.h`), told to the visitor (named parameter `visitor`) as it begins and
+ends. A call runs some of them, each at most once, one after the other (never nested); a stage
+that throws `Invalid_prediction` gets no `stage_end()`.
 */
 enum class Stage {
   /// the input checked: coordinates finite; for `delaunay_from_prediction()`, the faces read
@@ -30,12 +30,15 @@ enum class Stage {
   /// copy of the points.
   order,
   /// `delaunay_from_prediction()`: the import of the faces with their certificate
-  /// (orientation, pairing of edges, in-circle tests).
+  /// (orientation, pairing of edges, in-circle tests). On the torus, both entry points: the
+  /// faces read into flat arrays with their offsets (the in-circle tests are `certify`).
   import,
   /// `make_delaunay()`: the certification of the faces (sequentially, with Lawson's flips of
-  /// the failing edges as they are found).
+  /// the failing edges as they are found). On the torus, both entry points: the in-circle test
+  /// of every edge.
   certify,
-  /// `make_delaunay()`: the flips that make inverted faces counterclockwise.
+  /// `make_delaunay()`, and both entry points on the torus: the flips (on the torus, also the
+  /// reinsertions) that make inverted faces counterclockwise.
   untangle,
   /// the local repair: faces carved, holes filled, the vertices left without a face reinserted.
   carve,

@@ -235,7 +235,14 @@ void reinsert_vertex_objects(Triangulation& tr, const std::vector<typename Trian
   std::vector<std::size_t> order(vertices.size());
   for(std::size_t k = 0; k < order.size(); ++k)
     order[k] = k;
-  sort_along_grid(order, [&](std::size_t k) -> const Point& { return vertices[k]->point(); }, false);
+  {
+    // A copy of the points, read as every other caller's are (one sort compiled for all).
+    std::vector<Point> points;
+    points.reserve(vertices.size());
+    for(const Vertex_handle& v : vertices)
+      points.push_back(v->point());
+    sort_along_grid(order, Point_of_index<const Point*>{points.data()}, false);
+  }
   Face_handle hint = tr.infinite_vertex()->face();
   const Point* previous = nullptr; // the point inserted last, at `hint`
   // Only to choose where a walk starts. Halves and hypot: no overflow near 1e308, no

@@ -16,6 +16,7 @@
 
 #include <CGAL/Delaunay_from_prediction/Statistics.h>
 #include <CGAL/Delaunay_from_prediction/internal/toolbox/concurrency.h>
+#include <CGAL/Delaunay_from_prediction/internal/toolbox/hash_map.h>
 #include <CGAL/Delaunay_from_prediction/internal/toolbox/predicates.h>
 #include <CGAL/Delaunay_from_prediction/internal/build/flat_insertion.h>
 #include <CGAL/Delaunay_from_prediction/internal/build/insertion.h>
@@ -90,7 +91,7 @@ std::size_t insert_by_index(DT& dt, PointIterator points, std::vector<std::size_
                             OnVertex on_vertex, bool in_order = false)
 {
   if(!in_order)
-    sort_along_grid(indices, [&](std::size_t i) -> decltype(points[0]) { return points[i]; }, true);
+    sort_along_grid(indices, Point_of_index<PointIterator>{points}, true);
   const std::size_t before = dt.number_of_vertices();
   typename DT::Face_handle hint;
   std::vector<std::pair<typename DT::Face_handle, int>> stack;
@@ -128,7 +129,8 @@ void insert_points(DT& dt, PointIterator points, std::vector<std::size_t>& indic
 // Copies the faces of the Delaunay triangulation `aside` into the TDS of `tr`, whose faces
 // are dropped: `vertex_of(aside vertex)` gives the vertex of `tr` for each vertex of `aside`
 // (the infinite one included; called on several threads with `parallel`). A face of dimension d
-// has max(1, d + 1) vertex slots and d + 1 neighbors. Uses the faces' info() of `aside`. With
+// has max(1, d + 1) vertex slots and d + 1 neighbors. Numbers the faces of `aside` in their
+// info() when they have one. With
 // `parallel`, the faces are created in chunks on TBB's threads, each in a container of its own
 // (CGAL's containers are not thread-safe), spliced in chunk order, and linked on TBB's threads.
 template <class Aside, class Triangulation, class VertexOf>
@@ -143,10 +145,23 @@ void transplant(Aside& aside, Triangulation& tr, VertexOf vertex_of, bool parall
   const std::size_t m = aside.tds().faces().size();
   std::vector<typename Aside::Face_handle> from;
   from.reserve(m);
+  // The number of each face of `aside`: its info() when it has one (the builds aside), a
+  // table otherwise (the triangulations of collinear points, small).
+  constexpr bool numbered_by_info = has_index_info<typename Aside::Face>::value;
+  Hash_map<const void*, std::size_t> number(numbered_by_info ? 0 : 2 * m + 16);
   for(auto f = aside.tds().faces().begin(); f != aside.tds().faces().end(); ++f) {
-    f->info() = from.size();
+    if constexpr(numbered_by_info)
+      f->info() = from.size();
+    else
+      number.insert(&*f, from.size());
     from.push_back(f);
   }
+  auto number_of = [&](typename Aside::Face_handle f) -> std::size_t {
+    if constexpr(numbered_by_info)
+      return f->info();
+    else
+      return *number.find(&*f);
+  };
   std::vector<Face_handle> face_of(m);
   constexpr std::size_t chunk_size = std::size_t(1) << 15;
   const std::size_t chunks = parallel ? (m + chunk_size - 1) / chunk_size : 1;
@@ -166,10 +181,10 @@ void transplant(Aside& aside, Triangulation& tr, VertexOf vertex_of, bool parall
   for_each_block(chunks > 1, chunks, [&](std::size_t c) {
     for(std::size_t k = c * m / chunks, end = (c + 1) * m / chunks; k < end; ++k)
       for(int j = 0; j < neighbors; ++j)
-        face_of[k]->set_neighbor(j, face_of[from[k]->neighbor(j)->info()]);
+        face_of[k]->set_neighbor(j, face_of[number_of(from[k]->neighbor(j))]);
   });
   for(auto v = aside.tds().vertices().begin(); v != aside.tds().vertices().end(); ++v)
-    vertex_of(v)->set_face(face_of[v->face()->info()]);
+    vertex_of(v)->set_face(face_of[number_of(v->face())]);
 }
 
 // The traits whose predicates decide the faces for traits whose predicates are not exact:
@@ -207,7 +222,7 @@ std::vector<Deciding_dt::Vertex_handle> build_deciding(Deciding_dt& aside, Point
       v->info() = (std::min)(v->info(), i); // the smallest index of the point
     }
   };
-  sort_along_grid(indices, [&](std::size_t i) -> const Deciding_gt::Point_2& { return rounded[i]; }, true);
+  sort_along_grid(indices, Point_of_index<const Deciding_gt::Point_2*>{rounded.data()}, true);
   if(!build_on_flat_arrays(aside, rounded.begin(), indices, on_vertex))
     insert_by_index(aside, rounded.begin(), indices, on_vertex, true);
   return vertex;
@@ -266,7 +281,7 @@ void build_from_scratch(DT& dt, PointIterator points, std::size_t n, Statistics&
   if(in_order)
     deal_into_rounds(indices);
   else
-    sort_along_grid(indices, [&](std::size_t i) -> decltype(points[0]) { return points[i]; }, true);
+    sort_along_grid(indices, Point_of_index<PointIterator>{points}, true);
   std::size_t duplicates = 0;
   if(!build_on_flat_arrays(dt, points, indices, [&](std::size_t i, auto v, bool is_new) {
        record_index_info(v, i, is_new, duplicates);
@@ -308,9 +323,14 @@ bool rebuild_keeping_vertices(Triangulation& tr, Statistics& stats, BuildAside b
   using Gt = typename Triangulation::Geom_traits;
   using Point = typename Triangulation::Point;
   using Vertex_handle = typename Triangulation::Vertex_handle;
+  // The triangulation `build_aside` builds, vertices and faces numbered in their info().
   using Aside_tds = Triangulation_data_structure_2<Triangulation_vertex_base_with_info_2<std::size_t, Gt>,
                                                    Triangulation_face_base_with_info_2<std::size_t, Gt>>;
   using Aside = Delaunay_triangulation_2<Gt, Aside_tds>;
+  // The triangulation of collinear points (dimension 0 or 1), on tr's own data structure: for
+  // a Delaunay_triangulation_2, tr's own type, so that no second triangulation type is
+  // compiled for this rare case.
+  using Line = Delaunay_triangulation_2<Gt, typename Triangulation::Triangulation_data_structure>;
 
   std::vector<Vertex_handle> vertices;
   std::vector<Point> points;
@@ -331,7 +351,6 @@ bool rebuild_keeping_vertices(Triangulation& tr, Statistics& stats, BuildAside b
         << CGAL::to_double(points[i].x()) << ", " << CGAL::to_double(points[i].y()) << ")";
     throw Invalid_prediction(msg.str());
   };
-  Aside aside(tr.geom_traits());
   std::vector<std::size_t> indices(n);
   for(std::size_t i = 0; i < n; ++i)
     indices[i] = i;
@@ -352,47 +371,47 @@ bool rebuild_keeping_vertices(Triangulation& tr, Statistics& stats, BuildAside b
   stats.points_reinserted += n;
   if constexpr(decides_by_exact_predicates<Gt>::value) {
     // Faces decided by exact predicates (build_deciding()): the same vertex objects, none lost.
-    (void)aside;
     Deciding_dt exact;
-    build_deciding(exact, points.begin(), n, duplicates); // only where rounding to double merged two points
+    build_deciding(exact, points.data(), n, duplicates); // only where rounding to double merged two points
     transplant(exact, tr, [&](Deciding_dt::Vertex_handle v) {
       return v == exact.infinite_vertex() ? tr.infinite_vertex() : vertices[v->info()];
     });
   } else {
-    bool built = false;
     if constexpr(!std::is_same<BuildAside, std::nullptr_t>::value) {
+      Aside aside(tr.geom_traits());
       const bool ran = build_aside(aside, points.begin(), n);
-      built = ran && aside.number_of_vertices() == n;
-      if(ran && !built) // a point lost: the insertion below names the two at the same point
-        or_by_insertion = true;
-      if(!built)
-        aside.clear();
-    }
-    if(!built && !or_by_insertion)
-      return false;
-    if(!built) {
-      // On flat arrays (flat_insertion.h), written into tr's own face objects.
-      sort_along_grid(indices, [&](std::size_t i) -> const Point& { return points[i]; }, true);
-      Flat_delaunay<Gt> flat(tr.geom_traits());
-      if(flat.build(n, [&](std::size_t k) -> const Point& { return points[indices[k]]; })) {
-        for(std::size_t k = 0; k < n; ++k)
-          if(flat.representative(k) != k)
-            duplicates(indices[flat.representative(k)], indices[k]); // throws; tr untouched
-        flat.write_faces(tr.tds(), tr.infinite_vertex(), [&](std::uint32_t k) { return vertices[indices[k]]; });
+      if(ran && aside.number_of_vertices() == n) {
+        transplant(aside, tr, [&](typename Aside::Vertex_handle v) {
+          return v == aside.infinite_vertex() ? tr.infinite_vertex() : vertices[v->info()];
+        }, true); // on several threads
         return true;
       }
+      if(ran) // a point lost: the insertion below names the two at the same point
+        or_by_insertion = true;
     }
-    if(!built) // dimension 0 or 1
-      insert_by_index(aside, points.begin(), indices, [&](std::size_t i, auto v, bool is_new) {
-        if(is_new) {
-          v->info() = i;
-          return;
-        }
-        duplicates(i, v->info());
-      });
-    transplant(aside, tr, [&](typename Aside::Vertex_handle v) {
-      return v == aside.infinite_vertex() ? tr.infinite_vertex() : vertices[v->info()];
-    }, built); // built aside by build_aside: on several threads
+    if(!or_by_insertion)
+      return false;
+    // On flat arrays (flat_insertion.h), written into tr's own face objects.
+    sort_along_grid(indices, Point_of_index<const Point*>{points.data()}, true);
+    Flat_delaunay<Gt> flat(tr.geom_traits());
+    if(flat.build(n, [&](std::size_t k) -> const Point& { return points[indices[k]]; })) {
+      for(std::size_t k = 0; k < n; ++k)
+        if(flat.representative(k) != k)
+          duplicates(indices[flat.representative(k)], indices[k]); // throws; tr untouched
+      flat.write_faces(tr.tds(), tr.infinite_vertex(), [&](std::uint32_t k) { return vertices[indices[k]]; });
+      return true;
+    }
+    // Dimension 0 or 1: inserted one by one aside, then transplanted.
+    Line line(tr.geom_traits());
+    Hash_map<const void*, std::size_t> index_of(2 * n + 16);
+    insert_by_index(line, points.data(), indices, [&](std::size_t i, auto v, bool is_new) {
+      if(!is_new)
+        duplicates(i, *index_of.find(&*v)); // throws; tr untouched
+      index_of.insert(&*v, i);
+    });
+    transplant(line, tr, [&](typename Line::Vertex_handle v) {
+      return v == line.infinite_vertex() ? tr.infinite_vertex() : vertices[*index_of.find(&*v)];
+    });
   }
   return true;
 }

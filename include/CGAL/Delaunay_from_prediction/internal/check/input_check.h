@@ -132,15 +132,16 @@ void read_face(const Face& face, std::size_t k, std::size_t n, std::size_t out[3
 // fit in 32 bits (a CGAL triangulation of that many points needs hundreds of GB anyway).
 // With `parallel` and a random-access range, in blocks on TBB's threads; a malformed face
 // throws as in order: the first one, from the first block that has one.
-template <class FaceRange>
+template <class FaceRange, class Parallel = bool>
 bool read_index_triples(const FaceRange& faces, std::size_t n, std::size_t number_of_faces,
-                        std::vector<std::uint32_t>& triples, bool parallel = false)
+                        std::vector<std::uint32_t>& triples, Parallel parallel = false)
 {
   const bool fits = n < std::size_t(std::uint32_t(-1)) && number_of_faces < (std::size_t(1) << 31);
   triples.assign(fits ? 3 * number_of_faces : 0, 0);
   using Iterator = decltype(std::begin(faces));
-  if constexpr(std::is_base_of<std::random_access_iterator_tag,
-                               typename std::iterator_traits<Iterator>::iterator_category>::value) {
+  if constexpr(may_run_in_parallel<Parallel>() &&
+                std::is_base_of<std::random_access_iterator_tag,
+                                typename std::iterator_traits<Iterator>::iterator_category>::value) {
     constexpr std::size_t block = 1 << 16;
     const std::size_t blocks = (number_of_faces + block - 1) / block;
     if(parallel && blocks > 1) {
@@ -248,12 +249,35 @@ constexpr bool is_index_pair()
     return std::is_integral<typename first_of_tuple<Edge>::type>::value;
 }
 
+template <class Point, class Range, class = void>
+struct is_contiguous_range_of : std::false_type
+{
+};
+template <class Point, class Range>
+struct is_contiguous_range_of<Point, Range, std::void_t<decltype(std::data(std::declval<const Range&>()))>>
+    : std::is_same<decltype(std::data(std::declval<const Range&>())), const Point*>
+{
+};
+
 template <class PointRange, class Point>
 constexpr void check_point_range_type()
 {
   static_assert(std::is_convertible<typename range_value<PointRange>::type, Point>::value,
                 "Delaunay_from_prediction: `points` must be a range of the triangulation's points "
                 "(DT::Point, e.g. std::vector<K::Point_2> for a triangulation of kernel K)");
+}
+
+// The iterator the stages read `points` through: a pointer when the range stores exactly
+// `Point`s contiguously (std::vector, std::array, a C array), so that every such range, and the
+// copies the stages make, share one instantiation of the code that reads points; the range's
+// own iterator otherwise.
+template <class Point, class PointRange>
+auto point_iterator(const PointRange& points)
+{
+  if constexpr(is_contiguous_range_of<Point, PointRange>::value)
+    return static_cast<const Point*>(std::data(points));
+  else
+    return std::begin(points);
 }
 
 template <class FaceRange>

@@ -284,9 +284,9 @@ public:
   //
   // `visitor` is told of the two stages (visitor.h): Stage::order, the spatial reordering with
   // the copy of the points, and Stage::import, the import and certificate.
-  template <class PointIterator, class Visitor = Default_visitor>
+  template <class PointIterator, class Visitor = Default_visitor, class Parallel = bool>
   static void run(Triangulation& tr, PointIterator points, std::size_t n, std::vector<std::uint32_t>& triples,
-                  Imported_prediction<Triangulation>& out, bool tolerant, bool parallel = false,
+                  Imported_prediction<Triangulation>& out, bool tolerant, Parallel parallel = false,
                   Visitor&& visitor = Visitor(), std::size_t max_failing = std::size_t(-1),
                   std::size_t max_hole_halfedges = 0)
   {
@@ -300,7 +300,11 @@ public:
     out.reordered = order.renumbered() || order.faces_sorted();
     auto import = [&](auto sorted_points) {
       visitor.stage_begin(Stage::import);
-      if(!parallel || importer.number_of_faces_ < 2 * min_chunk || !importer.build_in_chunks(sorted_points, triples, order))
+      bool built = false;
+      if constexpr(may_run_in_parallel<Parallel>())
+        built = parallel && importer.number_of_faces_ >= 2 * min_chunk &&
+                importer.build_in_chunks(sorted_points, triples, order);
+      if(!built)
         importer.build(sorted_points, triples, order);
       visitor.stage_end(Stage::import);
     };

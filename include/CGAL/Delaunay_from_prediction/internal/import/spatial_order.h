@@ -56,6 +56,17 @@ constexpr std::uint64_t brio_seed = 0x5eed5eed5eedull;
 // resolve densities varying by 4^6 times the points per cell.
 constexpr int max_grid_depth = 6;
 
+// The point of index i of a random-access sequence: the reader of points that sort_along_grid()'s
+// callers share, so that a program compiles the sort once per point iterator rather than once
+// per call (each lambda has a type of its own). (A Function_ref would compile it once, but its
+// indirect call per point added 2.6% to the instructions of a whole delaunay_from_prediction().)
+template <class PointIterator>
+struct Point_of_index
+{
+  PointIterator points;
+  decltype(auto) operator()(std::size_t i) const { return points[i]; }
+};
+
 // Writes to `out` the indices in [first, last) sorted along a serpentine grid over the
 // bounding box of their points, about four points a cell, rows alternately left to right and
 // right to left, so that consecutive indices name nearby points; then sorts each crowded cell
@@ -67,18 +78,35 @@ constexpr int max_grid_depth = 6;
 //
 // With `parallel` (no biased rounds: their random draws are sequential), the bounding box and
 // the sort run on TBB's threads (counting_sort()), with the same order.
-template <class Index, class PointAt>
-void sort_serpentine(const Index* first, const Index* last, Index* out, PointAt point_at, bool biased_rounds,
-                     int depth, bool parallel = false)
+// The coordinates, as doubles, of the point point_at(i) of index i, for sort_serpentine().
+template <class PointAt>
+struct Coordinates_reader
+{
+  const PointAt& point_at;
+  void operator()(std::size_t i, double& x, double& y) const
+  {
+    const auto& p = point_at(i);
+    x = CGAL::to_double(p.x());
+    y = CGAL::to_double(p.y());
+  }
+};
+
+// `point(i, x, y)` sets x and y to the coordinates of the point of index i.
+template <class Parallel = std::false_type, class Reader>
+void sort_serpentine(const std::uint32_t* first, const std::uint32_t* last, std::uint32_t* out, const Reader& point,
+                     bool biased_rounds, int depth, Parallel in_parallel = Parallel())
 {
   const std::size_t m = std::size_t(last - first);
-  parallel = parallel && !biased_rounds;
+  const auto parallel = parallel_argument<Parallel>(in_parallel && !biased_rounds);
   const std::size_t block = 1 << 16, blocks = (m + block - 1) / block;
   std::vector<Box> block_box(blocks);
   for_each_block(parallel, blocks, [&](std::size_t b) {
-    const std::size_t begin = b * block;
-    block_box[b] = bounding_box((std::min)(m, begin + block) - begin,
-                                [&](std::size_t k) -> decltype(point_at(*first)) { return point_at(first[begin + k]); });
+    Box& box = block_box[b];
+    double x, y;
+    for(std::size_t k = b * block, end = (std::min)(m, k + block); k < end; ++k) {
+      point(std::size_t(first[k]), x, y);
+      box.add(x, y);
+    }
   });
   Box box;
   for(const Box& b : block_box)
@@ -93,37 +121,49 @@ void sort_serpentine(const Index* first, const Index* last, Index* out, PointAt 
   counting_sort(
       m, (biased_rounds ? brio_rounds : 1) * cells,
       [&](std::size_t k) {
-        const auto& p = point_at(first[k]);
-        const std::size_t cx = grid.column(CGAL::to_double(p.x())), cy = grid.row(CGAL::to_double(p.y()));
+        double x, y;
+        point(std::size_t(first[k]), x, y);
+        const std::size_t cx = grid.column(x), cy = grid.row(y);
         std::size_t cell = cy * side + ((cy & 1) ? side - 1 - cx : cx);
         if(biased_rounds) // (sequential: in item order)
           cell += (brio_rounds - 1 - brio_round(random)) * cells;
         return cell;
       },
-      [&](std::size_t k) { return first[k]; }, [&](std::size_t position, Index i) { out[position] = i; }, parallel,
+      [&](std::size_t k) { return first[k]; }, [&](std::size_t position, std::uint32_t i) { out[position] = i; }, parallel,
       end);
   if(depth >= max_grid_depth)
     return;
-  std::vector<Index> crowded;
+  std::vector<std::uint32_t> crowded;
   for(std::size_t c = 0, begin = 0; c < end.size(); begin = end[c], ++c)
     if(end[c] - begin > crowded_cell && end[c] - begin < m) { // m: all equal points, no progress
       crowded.assign(out + begin, out + end[c]);
-      sort_serpentine(crowded.data(), crowded.data() + crowded.size(), out + begin, point_at, false, depth + 1);
+      sort_serpentine(crowded.data(), crowded.data() + crowded.size(), out + begin, point, false, depth + 1,
+                      std::false_type());
     }
 }
 
 // Sorts `indices` (of points) along the serpentine grid (sort_serpentine()). With
 // `biased_rounds`, in rounds: the biased randomized insertion order (BRIO) that keeps
 // incremental insertion fast, at a tenth of the cost of spatial_sort's median splits.
-template <class Index, class PointAt>
-void sort_along_grid(std::vector<Index>& indices, PointAt point_at, bool biased_rounds, bool parallel = false)
+// Indices of another type than std::uint32_t are sorted as 32-bit ones (no triangulation
+// holds 2^32 points).
+template <class Index, class PointAt, class Parallel = std::false_type>
+void sort_along_grid(std::vector<Index>& indices, const PointAt& point_at, bool biased_rounds,
+                     Parallel parallel = Parallel())
 {
   if(indices.size() < 2)
     return;
-  std::vector<Index> sorted(indices.size());
-  sort_serpentine(indices.data(), indices.data() + indices.size(), sorted.data(), point_at, biased_rounds, 0,
-                  parallel);
-  indices.swap(sorted);
+  const Coordinates_reader<PointAt> read{point_at};
+  if constexpr(std::is_same<Index, std::uint32_t>::value) {
+    std::vector<std::uint32_t> sorted(indices.size());
+    sort_serpentine(indices.data(), indices.data() + indices.size(), sorted.data(), read, biased_rounds, 0, parallel);
+    indices.swap(sorted);
+  } else {
+    CGAL_precondition(indices.size() < std::size_t(std::uint32_t(-1)));
+    std::vector<std::uint32_t> narrow(indices.begin(), indices.end()), sorted(indices.size());
+    sort_serpentine(narrow.data(), narrow.data() + narrow.size(), sorted.data(), read, biased_rounds, 0, parallel);
+    std::copy(sorted.begin(), sorted.end(), indices.begin());
+  }
 }
 
 // Deals indices listed in a spatial order into the rounds of a biased randomized insertion
@@ -159,9 +199,9 @@ public:
   // Decides and applies the reordering: renumbers the indices in `triples` (3 per face) and
   // permutes the faces. Afterwards old_index(v) is the caller's index of new point index v.
   // With `parallel`, on TBB's threads, with the same result.
-  template <class Gt, class PointIterator>
+  template <class Gt, class PointIterator, class Parallel = std::false_type>
   void compute(const Gt&, PointIterator points, std::size_t n, std::vector<std::uint32_t>& triples,
-               bool parallel = false)
+               Parallel parallel = Parallel())
   {
     if(n < min_points || triples.size() < 3 * min_points)
       return;
@@ -210,8 +250,8 @@ private:
     return true;
   }
 
-  template <class PointIterator>
-  void renumber_points(PointIterator points, std::size_t n, std::vector<std::uint32_t>& triples, bool parallel)
+  template <class PointIterator, class Parallel>
+  void renumber_points(PointIterator points, std::size_t n, std::vector<std::uint32_t>& triples, Parallel parallel)
   {
     old_of_.resize(n);
     const std::unique_ptr<std::uint32_t[]> new_of(new std::uint32_t[n]); // every entry written below
@@ -220,7 +260,7 @@ private:
       for(std::size_t i = first; i < last; ++i)
         old_of_[i] = std::uint32_t(i);
     });
-    sort_along_grid(old_of_, [&](std::uint32_t i) -> decltype(points[0]) { return points[i]; }, false, parallel);
+    sort_along_grid(old_of_, Point_of_index<PointIterator>{points}, false, parallel);
     for_each_range(parallel, n, block, [&](std::size_t first, std::size_t last) {
       for(std::size_t v = first; v < last; ++v)
         new_of[old_of_[v]] = std::uint32_t(v);
@@ -232,7 +272,8 @@ private:
   }
 
   // Counting sort of the faces by their smallest index (in groups of four indices).
-  void sort_faces(std::vector<std::uint32_t>& triples, std::size_t n, bool parallel)
+  template <class Parallel>
+  void sort_faces(std::vector<std::uint32_t>& triples, std::size_t n, Parallel parallel)
   {
     std::vector<std::uint32_t> sorted(triples.size()), end;
     counting_sort(

@@ -286,12 +286,12 @@ private:
 // the faces each, at least 32 and at most 16384, so that even small triangulations are cut
 // into several blocks and the tests cross block boundaries. Compact_container has no random
 // access: one sequential walk notes where each block starts (one word of each face).
-template <class Triangulation>
+template <class Triangulation, class Parallel = bool>
 Outcome certify_faces(Triangulation& tr, std::vector<std::pair<typename Triangulation::Face_handle, int>>& non_delaunay,
                       std::size_t& edges_tested, bool& hull_is_convex,
                       std::vector<typename Triangulation::Face_handle>* bad_faces = nullptr,
                       std::size_t max_bad_faces = 0, Inline_flips<Triangulation>* inline_flips = nullptr,
-                      bool parallel = false)
+                      Parallel parallel = false)
 {
   using Certifier = Face_certifier<Triangulation>;
   using Face_iterator = typename Certifier::Face_iterator;
@@ -302,10 +302,10 @@ Outcome certify_faces(Triangulation& tr, std::vector<std::pair<typename Triangul
   auto& tds = tr.tds();
   Certifier certifier(tr, bad_faces != nullptr, max_bad_faces, inline_flips);
   std::vector<typename Triangulation::Face_handle> unused_bad;
-  if(!parallel) {
+  if(!may_run_in_parallel<Parallel>() || !parallel) {
     certifier.certify_block(tds.faces_begin(), tds.faces_end(),
                             {non_delaunay, bad_faces != nullptr ? *bad_faces : unused_bad, edges_tested});
-  } else {
+  } else if constexpr(may_run_in_parallel<Parallel>()) {
     const std::size_t block_faces =
         (std::min)((std::max)(tds.number_of_faces() / 64, std::size_t(32)), std::size_t(16384));
     std::vector<Face_iterator> starts;

@@ -21,8 +21,8 @@ namespace internal {
 
 // The triangles of the graph: every three points pairwise joined by an edge, found by
 // intersecting the sorted neighbour lists of the two ends of each edge (each triangle once,
-// from its two smallest indices). Purely combinatorial and O(m d) for m edges of degree at
-// most d. In a graph that is DT(P) with edges missing these are the triangular faces, plus,
+// from its two smallest indices). Purely combinatorial: O(m log m + m d) for m edges of degree
+// at most d (the edges sorted, then the lists intersected). In a graph that is DT(P) with edges missing these are the triangular faces, plus,
 // rarely, a separating triangle around a vertex of degree 3: the importer leaves out what
 // overlaps (faces on the same side of an edge), and the faces with more than three sides
 // become holes that the local repair fills (ear clipping, then flips).

@@ -37,10 +37,14 @@ namespace internal {
 // Every flip until the triangulation is certified again (during certification, untangling)
 // is logged: if the rebuild finds two vertices at the same point, they are undone before it
 // throws, so that `tr` is left as it was (a carve rolled back updates the log).
-template <class Triangulation>
+// `CompiledPaths`: what the call compiles (Compiled_paths).
+template <class Triangulation, class CompiledPaths>
 class In_place_stages
 {
 public:
+  using Paths = CompiledPaths;
+  // The `parallel` argument of the stages' functions: the call's, known at compile time.
+  static constexpr Parallel_constant<Paths::parallel> parallel() { return {}; }
   using Face_handle = typename Triangulation::Face_handle;
   static constexpr bool decides_exactly = !decides_by_exact_predicates<typename Triangulation::Geom_traits>::value;
 
@@ -121,7 +125,7 @@ public:
     const Outcome why = run(Stage::certify, [&] {
       return certify_faces(tr_, stack_, stats_.edges_tested, hull_is_convex_,
                            options_.repairs_locally() ? &inverted_ : nullptr, options_.max_inverted_faces(),
-                           flip_inline_ ? &inline_flips_ : nullptr, options_.parallel);
+                           flip_inline_ ? &inline_flips_ : nullptr, parallel());
     });
     if(why == Outcome::ok)
       stats_.edges_not_locally_delaunay = flip_inline_ ? inline_flips_.edges_failing : stack_.size();
@@ -134,9 +138,10 @@ public:
   template <class Run>
   Outcome repair(const Run& run)
   {
-    if(options_.strategy == Strategy::t_division &&
-       run(Stage::t_division, [&] { return divide(); }) == Outcome::ok)
-      return Outcome::ok;
+    if constexpr(Paths::has(Strategy::t_division)) {
+      if(options_.strategy == Strategy::t_division && run(Stage::t_division, [&] { return divide(); }) == Outcome::ok)
+        return Outcome::ok;
+    }
     if(inverted_.empty())
       return Outcome::ok;
     run(Stage::untangle, [&] { return untangle(); });
@@ -152,7 +157,7 @@ public:
       return Outcome::hull_not_convex;
     const std::size_t budget =
         options_.max_flips + (regions_ ? options_.flips_for_reinserted(regions_->detached().size()) : 0);
-    if(lawson_flip(tr_, stack_, budget, stats_.flips, touched_, options_.parallel))
+    if(lawson_flip(tr_, stack_, budget, stats_.flips, touched_, parallel()))
       return Outcome::ok;
     flips_before_repair_.clear(); // a triangulation again, without duplicates: nothing to undo
     return Outcome::flip_budget_exhausted;
@@ -185,12 +190,16 @@ public:
   // it was when the exception leaves.
   void rebuild()
   {
-    const std::size_t blocks = decides_exactly ? options_.rebuild_blocks() : 1;
     try {
-      rebuild_keeping_vertices(tr_, stats_, [&](auto& aside, auto points, std::size_t n) {
-        Statistics ignored;
-        return blocks > 1 && build_in_blocks(aside, points, n, ignored, blocks);
-      });
+      if constexpr(Paths::parallel && decides_exactly) {
+        rebuild_keeping_vertices(tr_, stats_, [&](auto& aside, auto points, std::size_t n) {
+          const std::size_t blocks = options_.rebuild_blocks();
+          Statistics ignored;
+          return blocks > 1 && build_in_blocks(aside, points, n, ignored, blocks);
+        });
+      } else {
+        rebuild_keeping_vertices(tr_, stats_);
+      }
     } catch(const Invalid_prediction&) {
       undo_flips(tr_, flips_before_repair_);
       throw;
@@ -220,7 +229,7 @@ private:
   Outcome untangle()
   {
     const std::size_t logged = flips_before_repair_.size();
-    untangle_by_flips(tr_, inverted_, stack_, flips_before_repair_, touched_, options_.parallel);
+    untangle_by_flips(tr_, inverted_, stack_, flips_before_repair_, touched_, parallel());
     stats_.flips += flips_before_repair_.size() - logged;
     return Outcome::ok;
   }

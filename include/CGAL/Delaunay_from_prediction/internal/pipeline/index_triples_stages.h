@@ -53,11 +53,15 @@ bool repair_region_completion(const typename DT::Geom_traits& gt, const std::vec
 // by address, and a repair recycles the objects of the faces it destroys, so the faces the
 // stages make or change are recorded as they go (the import's filled faces, is_created(),
 // `modified_`, `touched_`): a count at the end by vertex triples would need all 2n predicted
-// triples in a table, a cost on every call.
-template <class DT, class PointIterator, class FaceRange>
+// triples in a table, a cost on every call. `CompiledPaths`: what the call compiles
+// (Compiled_paths).
+template <class DT, class PointIterator, class FaceRange, class CompiledPaths>
 class Index_triples_stages
 {
 public:
+  using Paths = CompiledPaths;
+  // The `parallel` argument of the stages' functions: the call's, known at compile time.
+  static constexpr Parallel_constant<Paths::parallel> parallel() { return {}; }
   using Vertex_handle = typename DT::Vertex_handle;
   using Face_handle = typename DT::Face_handle;
   static constexpr bool decides_exactly = !decides_by_exact_predicates<typename DT::Geom_traits>::value;
@@ -78,7 +82,7 @@ public:
   Outcome check()
   {
     check_points_are_finite(point_at_, n_);
-    fits_ = read_index_triples(faces_, n_, number_of_faces_, triples_, options_.parallel);
+    fits_ = read_index_triples(faces_, n_, number_of_faces_, triples_, parallel());
     return Outcome::ok;
   }
 
@@ -171,7 +175,7 @@ public:
   Outcome certify(const Run& run)
   {
     Prediction_importer<DT>::run(result_, point_at_, n_, triples_, imported_, options_.repairs_locally(),
-                                 options_.parallel, run.visitor,
+                                 parallel(), run.visitor,
                                  options_.default_flip_budget ? options_.failing_edges_limit() : std::size_t(-1),
                                  options_.max_open_halfedges());
     stats_.input_reordered = imported_.reordered;
@@ -198,8 +202,10 @@ public:
       if(why != Outcome::ok)
         return why;
     }
-    if(options_.strategy == Strategy::t_division)
-      run(Stage::t_division, [&] { return divide(); });
+    if constexpr(Paths::has(Strategy::t_division)) {
+      if(options_.strategy == Strategy::t_division)
+        run(Stage::t_division, [&] { return divide(); });
+    }
     return Outcome::ok;
   }
 
@@ -207,7 +213,7 @@ public:
   {
     const std::size_t budget =
         options_.max_flips + (regions_ ? options_.flips_for_reinserted(regions_->detached().size()) : 0);
-    return lawson_flip(result_, stack(), budget, stats_.flips, touched_, options_.parallel)
+    return lawson_flip(result_, stack(), budget, stats_.flips, touched_, parallel())
                ? Outcome::ok
                : Outcome::flip_budget_exhausted;
   }
@@ -259,13 +265,11 @@ public:
     const std::vector<std::uint32_t> grid_order = std::move(imported_.points_in_grid_order);
     imported_ = Imported_prediction<DT>();
     DT fresh(dt_.geom_traits());
-    const bool along_tree = options_.strategy == Strategy::spanning_tree || options_.strategy == Strategy::section_3;
-    if(!decides_exactly || !along_tree || !fits_ || n_ >= std::size_t(no_rank)) {
+    if(!decides_exactly || !along_tree() || !fits_ || n_ >= std::size_t(no_rank)) {
       std::vector<std::uint32_t>().swap(triples_); // not needed: keep the peak memory down
-      const std::size_t blocks = decides_exactly ? options_.rebuild_blocks() : 1;
-      if(blocks < 2 || !build_in_blocks(fresh, point_at_, n_, stats_, blocks))
+      if(!build_in_blocks_if_parallel(fresh))
         build_from_scratch(fresh, point_at_, n_, stats_, grid_order);
-    } else {
+    } else if constexpr(Paths::has(Strategy::spanning_tree) || Paths::has(Strategy::section_3)) {
       // Two edges of each face keep its three corners connected (`triples_` is still as read:
       // the import, which reorders it, did not run).
       std::vector<std::uint32_t> ends;
@@ -273,15 +277,39 @@ public:
       for(std::size_t t = 0; t < triples_.size(); t += 3)
         ends.insert(ends.end(), {triples_[t], triples_[t + 1], triples_[t + 1], triples_[t + 2]});
       std::vector<std::uint32_t>().swap(triples_);
-      if(options_.strategy == Strategy::section_3)
-        build_by_conflict_list_rounds(fresh, point_at_, n_, ends, stats_);
-      else
-        build_along_edges(fresh, point_at_, n_, ends, stats_);
+      if constexpr(Paths::has(Strategy::section_3)) {
+        if(options_.strategy == Strategy::section_3) {
+          build_by_conflict_list_rounds(fresh, point_at_, n_, ends, stats_);
+          dt_.swap(fresh);
+          return;
+        }
+      }
+      build_along_edges(fresh, point_at_, n_, ends, stats_);
     }
     dt_.swap(fresh);
   }
 
 private:
+  // Whether the rebuild inserts along a spanning tree of the faces' edges.
+  bool along_tree() const
+  {
+    return (Paths::has(Strategy::spanning_tree) && options_.strategy == Strategy::spanning_tree) ||
+           (Paths::has(Strategy::section_3) && options_.strategy == Strategy::section_3);
+  }
+
+  // The rebuild in blocks on several threads (block_parallel_build.h), when the call runs on
+  // several and the points are enough; false when it did not build.
+  bool build_in_blocks_if_parallel(DT& fresh)
+  {
+    if constexpr(Paths::parallel && decides_exactly) {
+      const std::size_t blocks = options_.rebuild_blocks();
+      return blocks > 1 && build_in_blocks(fresh, point_at_, n_, stats_, blocks);
+    } else {
+      CGAL_USE(fresh);
+      return false;
+    }
+  }
+
   std::vector<std::pair<Face_handle, int>>& stack() { return imported_.not_locally_delaunay; }
 
   bool filled_by_import(const void* f) const
@@ -459,8 +487,9 @@ bool repair_region_completion(const typename DT::Geom_traits& gt, const std::vec
   options.fills_every_hole = true;
   options.region_size = default_region_size(points.size());
   DT dt(gt);
-  Index_triples_stages<DT, typename std::vector<typename DT::Point>::const_iterator, Faces> stages(
-      points.begin(), points.size(), faces, faces.size(), dt, options);
+  Index_triples_stages<DT, typename std::vector<typename DT::Point>::const_iterator, Faces,
+                       Compiled_paths<strategy_bit(Strategy::automatic), false>>
+      stages(points.begin(), points.size(), faces, faces.size(), dt, options);
   Default_visitor visitor;
   const Statistics s = run_prediction_pipeline(stages, options, visitor);
   work += s.flips;

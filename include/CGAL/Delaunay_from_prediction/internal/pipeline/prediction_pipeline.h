@@ -25,7 +25,9 @@
 #include <CGAL/Named_function_parameters.h>
 
 #include <cstddef>
+#include <cstdint>
 #include <functional>
+#include <type_traits>
 
 namespace CGAL {
 namespace Delaunay_from_prediction {
@@ -53,6 +55,48 @@ inline std::size_t max_failing_edges(std::size_t max_flips)
 {
   return max_flips == std::size_t(-1) ? max_flips : std::size_t(double(max_flips) / 1.35);
 }
+
+// What one call compiles: the strategies it may run (bit `1 << s` of `StrategyMask` for
+// Strategy `s`) and whether it may run on several threads. Both are known at compile time
+// from the call's ConcurrencyTag and the type of its named parameter `strategy`, so that a
+// program compiles only the code its calls can reach: without the parameter only
+// Strategy::automatic (with its fallback, the rebuild), with parameters::strategy<S>() only S,
+// with a run-time value every strategy. Each branch to a strategy's code stands behind
+// `if constexpr(Paths::has(s))`; Paths::parallel keeps the code that only runs on several
+// threads out of sequential calls.
+template <std::uint32_t StrategyMask, bool Parallel>
+struct Compiled_paths
+{
+  static constexpr bool parallel = Parallel;
+  static constexpr bool has(Strategy s) { return ((StrategyMask >> unsigned(s)) & 1u) != 0; }
+};
+
+constexpr std::uint32_t strategy_bit(Strategy s) { return std::uint32_t(1) << unsigned(s); }
+
+template <class T>
+struct is_strategy_constant : std::false_type
+{
+};
+template <Strategy S>
+struct is_strategy_constant<Strategy_constant<S>> : std::true_type
+{
+};
+
+// The strategies a call with named parameters `NamedParameters` may run (Compiled_paths).
+template <class NamedParameters>
+constexpr std::uint32_t strategies_compiled()
+{
+  using Given = typename CGAL::internal_np::Get_param<typename NamedParameters::base, internal_np::strategy_t>::type;
+  if constexpr(std::is_same<Given, CGAL::internal_np::Param_not_found>::value)
+    return strategy_bit(Strategy::automatic);
+  else if constexpr(is_strategy_constant<Given>::value)
+    return strategy_bit(Given::value);
+  else
+    return ~std::uint32_t(0);
+}
+
+template <class NamedParameters, bool Parallel>
+using Compiled_paths_of = Compiled_paths<strategies_compiled<NamedParameters>(), Parallel>;
 
 // What both entry points read from their named parameters, and the limits that choose between
 // a repair and a rebuild, each with the measurement behind it. `n`: the points (vertices).
@@ -165,19 +209,26 @@ struct Stage_runner
 template <class Stages, class Visitor>
 Outcome use_prediction(Stages& stages, const Pipeline_options& options, const Stage_runner<Visitor>& run)
 {
+  using Paths = typename Stages::Paths;
   Outcome why = stages.reason_not_to_use_prediction();
-  if(why == Outcome::ok && options.strategy == Strategy::regions && stages.can_build_by_regions()) {
-    // Theorem 5.4 in practical form (prediction_regions_build.h): a build, not a repair.
-    return run(Stage::regions, [&] { return stages.build_by_regions(); });
+  if constexpr(Paths::has(Strategy::regions)) {
+    if(why == Outcome::ok && options.strategy == Strategy::regions && stages.can_build_by_regions()) {
+      // Theorem 5.4 in practical form (prediction_regions_build.h): a build, not a repair.
+      return run(Stage::regions, [&] { return stages.build_by_regions(); });
+    }
   }
-  if(why == Outcome::ok && options.strategy == Strategy::theorem_4_1) {
-    // Theorem 4.1 (supercells.h) computes the faces, which the stages below certify.
-    why = run(Stage::supercells, [&] { return stages.compute_by_supercells(); });
+  if constexpr(Paths::has(Strategy::theorem_4_1)) {
+    if(why == Outcome::ok && options.strategy == Strategy::theorem_4_1) {
+      // Theorem 4.1 (supercells.h) computes the faces, which the stages below certify.
+      why = run(Stage::supercells, [&] { return stages.compute_by_supercells(); });
+    }
   }
-  if(why == Outcome::ok && options.strategy == Strategy::theorem_5_4) {
-    // Theorem 5.4 (region_recursion.h) computes the completion G'; the stages below are its
-    // step 6.
-    why = run(Stage::region_recursion, [&] { return stages.compute_by_region_recursion(); });
+  if constexpr(Paths::has(Strategy::theorem_5_4)) {
+    if(why == Outcome::ok && options.strategy == Strategy::theorem_5_4) {
+      // Theorem 5.4 (region_recursion.h) computes the completion G'; the stages below are its
+      // step 6.
+      why = run(Stage::region_recursion, [&] { return stages.compute_by_region_recursion(); });
+    }
   }
   if(why == Outcome::ok)
     why = run(Stage::screen, [&] { return stages.screen(); });

@@ -245,14 +245,18 @@ bool flip_in_cells(Triangulation& tr, std::vector<std::pair<typename Triangulati
                    std::size_t max_flips, std::size_t& flips,
                    std::vector<typename Triangulation::Face_handle>& touched);
 
-template <class Triangulation>
+template <class Triangulation, class Parallel = bool>
 bool lawson_flip(Triangulation& tr,
                  std::vector<std::pair<typename Triangulation::Face_handle, int>>& stack,
                  std::size_t max_flips, std::size_t& flips,
-                 std::vector<typename Triangulation::Face_handle>& touched, bool parallel = false)
+                 std::vector<typename Triangulation::Face_handle>& touched, Parallel parallel = false)
 {
-  if(parallel && stack.size() >= min_edges_to_flip_in_cells && !flip_in_cells(tr, stack, max_flips, flips, touched))
-    return false;
+  if constexpr(may_run_in_parallel<Parallel>()) {
+    if(parallel && stack.size() >= min_edges_to_flip_in_cells && !flip_in_cells(tr, stack, max_flips, flips, touched))
+      return false;
+  } else {
+    CGAL_USE(parallel);
+  }
   using Gt = typename Triangulation::Geom_traits;
   const Gt& gt = tr.geom_traits();
   auto not_locally_delaunay = [&gt](const auto&, int, const auto& a, const auto& b, const auto& c,
@@ -458,6 +462,16 @@ void flip_around_new_vertex(Triangulation& tr, typename Triangulation::Vertex_ha
 // triangulation make_delaunay() returns does not.
 constexpr std::size_t min_faces_to_untangle_in_cells = 64;
 
+// The scope of a task that may take every face (untangle_faces()).
+struct Every_vertex
+{
+  template <class Vertex_handle>
+  bool operator()(const Vertex_handle&) const
+  {
+    return true;
+  }
+};
+
 // The untangling of the faces bad[first, last), as described above, by one task (`alone`:
 // no other task runs): a face is taken when in_scope() holds for its vertices and those
 // across its finite edges, and appended to `deferred` otherwise.
@@ -530,50 +544,25 @@ void untangle_faces(Triangulation& tr, const std::vector<typename Triangulation:
 }
 
 template <class Triangulation>
+bool untangle_in_cells(Triangulation& tr, std::vector<typename Triangulation::Face_handle>& bad,
+                       std::vector<std::pair<typename Triangulation::Face_handle, int>>& stack,
+                       Flip_log<Triangulation>& log, std::vector<typename Triangulation::Face_handle>& touched);
+
+template <class Triangulation, class Parallel = bool>
 void untangle_by_flips(Triangulation& tr, std::vector<typename Triangulation::Face_handle>& bad,
                        std::vector<std::pair<typename Triangulation::Face_handle, int>>& stack,
                        Flip_log<Triangulation>& log,
-                       std::vector<typename Triangulation::Face_handle>& touched, bool parallel = false)
+                       std::vector<typename Triangulation::Face_handle>& touched, Parallel parallel = false)
 {
   using Face_handle = typename Triangulation::Face_handle;
-  using Vertex_handle = typename Triangulation::Vertex_handle;
-  using Edge = std::pair<Face_handle, int>;
-  const auto everywhere = [](Vertex_handle) { return true; };
-  std::vector<Face_handle> deferred;
-  Cell_grid grid;
-  if(parallel && bad.size() >= min_faces_to_untangle_in_cells &&
-     make_flip_cells(bad.size(), [&](std::size_t k) { return bad[k]; }, tr.infinite_vertex(), 256, grid)) {
-    const auto cell_of = [&grid](const auto& p) { return grid.cell_of(p); };
-    // Bad faces are finite: each goes to the cell of its first vertex.
-    std::vector<Face_handle> sorted(bad.size());
-    std::vector<std::uint32_t> end;
-    counting_sort(
-        bad.size(), grid.cells(), [&](std::size_t k) { return cell_of(bad[k]->vertex(0)->point()); },
-        [&](std::size_t k) { return bad[k]; },
-        [&](std::size_t position, Face_handle f) { sorted[position] = f; }, true, end);
-    struct Cell_output
-    {
-      std::vector<Face_handle> deferred, touched;
-      std::vector<Edge> stack;
-      Flip_log<Triangulation> log;
-    };
-    std::vector<Cell_output> out(grid.cells());
-    for_each_block(true, grid.cells(), [&](std::size_t cell) {
-      Cell_output& o = out[cell];
-      untangle_faces(tr, sorted, cell == 0 ? 0 : end[cell - 1], end[cell], false,
-                     [&](Vertex_handle v) { return v != tr.infinite_vertex() && cell_of(v->point()) == cell; },
-                     o.deferred, o.stack, o.log, o.touched);
-    });
-    for(Cell_output& o : out) {
-      deferred.insert(deferred.end(), o.deferred.begin(), o.deferred.end());
-      touched.insert(touched.end(), o.touched.begin(), o.touched.end());
-      stack.insert(stack.end(), o.stack.begin(), o.stack.end());
-      log.insert(log.end(), o.log.begin(), o.log.end());
-    }
-    std::vector<Face_handle> unused;
-    untangle_faces(tr, deferred, 0, deferred.size(), true, everywhere, unused, stack, log, touched);
-  } else {
-    untangle_faces(tr, bad, 0, bad.size(), true, everywhere, deferred, stack, log, touched);
+  bool in_cells = false;
+  if constexpr(may_run_in_parallel<Parallel>())
+    in_cells = parallel && bad.size() >= min_faces_to_untangle_in_cells && untangle_in_cells(tr, bad, stack, log, touched);
+  else
+    CGAL_USE(parallel);
+  if(!in_cells) {
+    std::vector<Face_handle> deferred;
+    untangle_faces(tr, bad, 0, bad.size(), true, Every_vertex(), deferred, stack, log, touched);
   }
   auto orientation = tr.geom_traits().orientation_2_object();
   bad.erase(std::remove_if(bad.begin(), bad.end(),
@@ -584,6 +573,53 @@ void untangle_by_flips(Triangulation& tr, std::vector<typename Triangulation::Fa
             bad.end());
   std::sort(bad.begin(), bad.end());
   bad.erase(std::unique(bad.begin(), bad.end()), bad.end());
+}
+
+// untangle_by_flips() on TBB's threads: the bad faces dealt to the cells of a grid, each
+// cell's task untangling the faces whose vertices it holds (as flip_in_cells() does), then
+// the faces deferred at the cells' borders on this thread. False when no grid fits.
+template <class Triangulation>
+bool untangle_in_cells(Triangulation& tr, std::vector<typename Triangulation::Face_handle>& bad,
+                       std::vector<std::pair<typename Triangulation::Face_handle, int>>& stack,
+                       Flip_log<Triangulation>& log, std::vector<typename Triangulation::Face_handle>& touched)
+{
+  using Face_handle = typename Triangulation::Face_handle;
+  using Vertex_handle = typename Triangulation::Vertex_handle;
+  using Edge = std::pair<Face_handle, int>;
+  Cell_grid grid;
+  if(!make_flip_cells(bad.size(), [&](std::size_t k) { return bad[k]; }, tr.infinite_vertex(), 256, grid))
+    return false;
+  const auto cell_of = [&grid](const auto& p) { return grid.cell_of(p); };
+  // Bad faces are finite: each goes to the cell of its first vertex.
+  std::vector<Face_handle> sorted(bad.size());
+  std::vector<std::uint32_t> end;
+  counting_sort(
+      bad.size(), grid.cells(), [&](std::size_t k) { return cell_of(bad[k]->vertex(0)->point()); },
+      [&](std::size_t k) { return bad[k]; },
+      [&](std::size_t position, Face_handle f) { sorted[position] = f; }, true, end);
+  struct Cell_output
+  {
+    std::vector<Face_handle> deferred, touched;
+    std::vector<Edge> stack;
+    Flip_log<Triangulation> log;
+  };
+  std::vector<Face_handle> deferred;
+  std::vector<Cell_output> out(grid.cells());
+  for_each_block(true, grid.cells(), [&](std::size_t cell) {
+    Cell_output& o = out[cell];
+    untangle_faces(tr, sorted, cell == 0 ? 0 : end[cell - 1], end[cell], false,
+                   [&](Vertex_handle v) { return v != tr.infinite_vertex() && cell_of(v->point()) == cell; },
+                   o.deferred, o.stack, o.log, o.touched);
+  });
+  for(Cell_output& o : out) {
+    deferred.insert(deferred.end(), o.deferred.begin(), o.deferred.end());
+    touched.insert(touched.end(), o.touched.begin(), o.touched.end());
+    stack.insert(stack.end(), o.stack.begin(), o.stack.end());
+    log.insert(log.end(), o.log.begin(), o.log.end());
+  }
+  std::vector<Face_handle> unused;
+  untangle_faces(tr, deferred, 0, deferred.size(), true, Every_vertex(), unused, stack, log, touched);
+  return true;
 }
 
 // Walks the hull of `tr` (dimension 2, every finite face ccw) and flips away reflex vertices

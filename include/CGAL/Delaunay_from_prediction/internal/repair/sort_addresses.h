@@ -13,6 +13,8 @@
 #ifndef CGAL_DELAUNAY_FROM_PREDICTION_INTERNAL_REPAIR_SORT_ADDRESSES_H
 #define CGAL_DELAUNAY_FROM_PREDICTION_INTERNAL_REPAIR_SORT_ADDRESSES_H
 
+#include <CGAL/Delaunay_from_prediction/internal/toolbox/function_ref.h>
+
 #include <algorithm>
 #include <cstddef>
 #include <cstdint>
@@ -121,9 +123,10 @@ private:
 // The number of distinct addresses among `listed` and those of the objects behind
 // `handles[first..]` for which `keep(address)` holds (asked once per distinct address that is
 // not in `listed`). Every address is that of an object of type `Object` as in Slot_bitmap.
-template <class Object, class Handle, class Keep>
+// (`keep` is a Function_ref: each call site's lambda would otherwise compile all of this again.)
+template <class Object, class Handle>
 std::size_t count_distinct_addresses(const std::vector<const void*>& listed, const std::vector<Handle>& handles,
-                                     std::size_t first, Keep keep)
+                                     std::size_t first, Function_ref<bool(const void*)> keep)
 {
   using Bitmap = Slot_bitmap<Object>;
   first = (std::min)(first, handles.size());

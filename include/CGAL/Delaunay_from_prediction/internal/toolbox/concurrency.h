@@ -25,6 +25,41 @@ namespace CGAL {
 namespace Delaunay_from_prediction {
 namespace internal {
 
+// Whether this translation unit can run work on several threads: only with TBB. Without it
+// every call is sequential (runs_in_parallel()), and the code that only runs on several threads
+// stands behind `if constexpr(threads_available)`, so that it is not compiled.
+#ifdef CGAL_LINKED_WITH_TBB
+constexpr bool threads_available = true;
+#else
+constexpr bool threads_available = false;
+#endif
+
+// The `parallel` argument of the package's stages is a bool, or std::true_type or
+// std::false_type where it is known at compile time (the entry points pass their
+// ConcurrencyTag's as such, so that a sequential call compiles no code that only runs on
+// several threads, even with TBB). Whether code given one of type `Parallel` may run on
+// several threads:
+template <class Parallel>
+constexpr bool may_run_in_parallel()
+{
+  return threads_available && !std::is_same<Parallel, std::false_type>::value;
+}
+
+// A bool `parallel` passed on as an argument of type Parallel would have: itself, or
+// std::false_type where code given a Parallel never runs on several threads.
+template <class Parallel>
+auto parallel_argument(bool parallel)
+{
+  if constexpr(may_run_in_parallel<Parallel>())
+    return parallel;
+  else
+    return std::false_type();
+}
+
+// The `parallel` argument the stages of a call pass, known at compile time.
+template <bool Parallel>
+using Parallel_constant = std::integral_constant<bool, Parallel>;
+
 // Whether an entry point called with `ConcurrencyTag` runs its parallel parts on TBB's threads.
 // CGAL::Parallel_if_available_tag is CGAL::Parallel_tag when CGAL_LINKED_WITH_TBB is defined
 // and CGAL::Sequential_tag otherwise (<CGAL/tags.h>), so it needs no case of its own.
@@ -50,28 +85,29 @@ constexpr bool runs_in_parallel()
 // Calls body(b) for every b in [0, blocks): on TBB's threads when `parallel` (then the bodies
 // must only write what block b owns), in increasing order otherwise. The number of threads is
 // TBB's: a tbb::task_arena or tbb::global_control around the call limits it.
-template <class Body>
-void for_each_block(bool parallel, std::size_t blocks, const Body& body)
+template <class Parallel, class Body>
+void for_each_block(Parallel parallel, std::size_t blocks, const Body& body)
 {
 #ifdef CGAL_LINKED_WITH_TBB
-  if(parallel && blocks > 1) {
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, blocks, 1), [&](const tbb::blocked_range<std::size_t>& r) {
-      for(std::size_t b = r.begin(); b != r.end(); ++b)
-        body(b);
-    });
-    return;
+  if constexpr(may_run_in_parallel<Parallel>()) {
+    if(parallel && blocks > 1) {
+      tbb::parallel_for(tbb::blocked_range<std::size_t>(0, blocks, 1), [&](const tbb::blocked_range<std::size_t>& r) {
+        for(std::size_t b = r.begin(); b != r.end(); ++b)
+          body(b);
+      });
+      return;
+    }
   }
-#else
-  (void)parallel;
 #endif
+  (void)parallel;
   for(std::size_t b = 0; b < blocks; ++b)
     body(b);
 }
 
 // Calls body(first, last) for the ranges [first, last) that cut [0, n) into pieces of `size`
 // items (the last one shorter), through for_each_block().
-template <class Body>
-void for_each_range(bool parallel, std::size_t n, std::size_t size, const Body& body)
+template <class Parallel, class Body>
+void for_each_range(Parallel parallel, std::size_t n, std::size_t size, const Body& body)
 {
   for_each_block(parallel, (n + size - 1) / size,
                  [&](std::size_t b) { body(b * size, (std::min)(n, (b + 1) * size)); });

@@ -22,6 +22,10 @@ namespace CGAL {
 namespace Delaunay_from_prediction {
 namespace internal {
 
+template <class KeyAt, class ItemAt, class Place>
+void counting_sort_in_blocks(std::size_t m, std::size_t buckets, const KeyAt& key_at, const ItemAt& item_at,
+                             const Place& place, std::unique_ptr<std::uint32_t[]>& key, std::vector<std::uint32_t>& end);
+
 // Stable counting sort of the items 0..m-1 by key_at(k) < buckets: calls place(position,
 // item_at(k)) once for each item, positions in key order and, among equal keys, in item
 // order, and sets end[b] to the position after the last item of bucket b. With `parallel`
@@ -31,14 +35,13 @@ namespace internal {
 // the low bits from its stretch of the buffer, which the cache holds; every pass writes only
 // what its block or bucket owns. key_at, item_at and place are then called from several
 // threads; key_at in item order within each block of items.
-template <class KeyAt, class ItemAt, class Place>
+template <class KeyAt, class ItemAt, class Place, class Parallel>
 void counting_sort(std::size_t m, std::size_t buckets, const KeyAt& key_at, const ItemAt& item_at, const Place& place,
-                   bool parallel, std::vector<std::uint32_t>& end)
+                   Parallel parallel, std::vector<std::uint32_t>& end)
 {
-  using Item = std::decay_t<decltype(item_at(std::size_t(0)))>;
   std::unique_ptr<std::uint32_t[]> key(new std::uint32_t[m]); // not zero-filled: written before read
   end.assign(buckets, 0);
-  if(!parallel || m < (std::size_t(1) << 16)) {
+  if(!may_run_in_parallel<Parallel>() || !parallel || m < (std::size_t(1) << 16)) {
     std::vector<std::uint32_t> start(buckets + 1, 0);
     for(std::size_t k = 0; k < m; ++k) {
       key[k] = std::uint32_t(key_at(k));
@@ -51,6 +54,16 @@ void counting_sort(std::size_t m, std::size_t buckets, const KeyAt& key_at, cons
     std::copy(start.begin(), start.end() - 1, end.begin());
     return;
   }
+  if constexpr(may_run_in_parallel<Parallel>())
+    counting_sort_in_blocks(m, buckets, key_at, item_at, place, key, end);
+}
+
+// counting_sort() on TBB's threads; `key` has room for m keys.
+template <class KeyAt, class ItemAt, class Place>
+void counting_sort_in_blocks(std::size_t m, std::size_t buckets, const KeyAt& key_at, const ItemAt& item_at,
+                             const Place& place, std::unique_ptr<std::uint32_t[]>& key, std::vector<std::uint32_t>& end)
+{
+  using Item = std::decay_t<decltype(item_at(std::size_t(0)))>;
   int shift = 0; // coarse bucket = key >> shift, at most 1024 of them
   while(((buckets - 1) >> shift) >= 1024)
     ++shift;
