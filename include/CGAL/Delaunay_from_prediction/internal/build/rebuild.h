@@ -133,8 +133,8 @@ void insert_points(DT& dt, PointIterator points, std::vector<std::size_t>& indic
 // info() when they have one. With
 // `parallel`, the faces are created in chunks on TBB's threads, each in a container of its own
 // (CGAL's containers are not thread-safe), spliced in chunk order, and linked on TBB's threads.
-template <class Aside, class Triangulation, class VertexOf>
-void transplant(Aside& aside, Triangulation& tr, VertexOf vertex_of, bool parallel = false)
+template <class Aside, class Triangulation, class VertexOf, class Parallel = std::false_type>
+void transplant(Aside& aside, Triangulation& tr, VertexOf vertex_of, Parallel parallel = Parallel())
 {
   using Face_handle = typename Triangulation::Face_handle;
   using Face_range = typename Triangulation::Triangulation_data_structure::Face_range;
@@ -168,7 +168,8 @@ void transplant(Aside& aside, Triangulation& tr, VertexOf vertex_of, bool parall
   std::vector<Face_range> created(chunks > 1 ? chunks : 0);
   tds.faces().clear();
   tds.set_dimension(dimension);
-  for_each_block(chunks > 1, chunks, [&](std::size_t c) {
+  const auto in_chunks = parallel_argument<Parallel>(chunks > 1);
+  for_each_block(in_chunks, chunks, [&](std::size_t c) {
     for(std::size_t k = c * m / chunks, end = (c + 1) * m / chunks; k < end; ++k) {
       const Face_handle g = chunks > 1 ? created[c].emplace() : tds.create_face();
       for(int j = 0; j < slots; ++j)
@@ -178,7 +179,7 @@ void transplant(Aside& aside, Triangulation& tr, VertexOf vertex_of, bool parall
   });
   for(Face_range& range : created)
     tds.faces().merge(range);
-  for_each_block(chunks > 1, chunks, [&](std::size_t c) {
+  for_each_block(in_chunks, chunks, [&](std::size_t c) {
     for(std::size_t k = c * m / chunks, end = (c + 1) * m / chunks; k < end; ++k)
       for(int j = 0; j < neighbors; ++j)
         face_of[k]->set_neighbor(j, face_of[number_of(from[k]->neighbor(j))]);

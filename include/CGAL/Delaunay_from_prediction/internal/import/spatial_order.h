@@ -58,8 +58,8 @@ constexpr int max_grid_depth = 6;
 
 // The point of index i of a random-access sequence: the reader of points that sort_along_grid()'s
 // callers share, so that a program compiles the sort once per point iterator rather than once
-// per call (each lambda has a type of its own). (A Function_ref would compile it once, but its
-// indirect call per point added 2.6% to the instructions of a whole delaunay_from_prediction().)
+// per call (each lambda has a type of its own). Not a Function_ref: an indirect call for each
+// point read would slow the sort, which runs on every import and rebuild.
 template <class PointIterator>
 struct Point_of_index
 {
@@ -67,17 +67,6 @@ struct Point_of_index
   decltype(auto) operator()(std::size_t i) const { return points[i]; }
 };
 
-// Writes to `out` the indices in [first, last) sorted along a serpentine grid over the
-// bounding box of their points, about four points a cell, rows alternately left to right and
-// right to left, so that consecutive indices name nearby points; then sorts each crowded cell
-// the same way over its own box, up to max_grid_depth. Cells far above their share (clusters, a density varying by orders of
-// magnitude) need it: a build of 1e6 points of density varying 10^8 times across the square
-// (x = u^4, y = v^4) took 1.6 times CGAL's time without, 0.8 times with. With
-// `biased_rounds` (depth 0 only), the points are first dealt into rounds (round r with
-// probability 7/8^(r+1), fixed seed), listed from the sparsest, each round in grid order.
-//
-// With `parallel` (no biased rounds: their random draws are sequential), the bounding box and
-// the sort run on TBB's threads (counting_sort()), with the same order.
 // The coordinates, as doubles, of the point point_at(i) of index i, for sort_serpentine().
 template <class PointAt>
 struct Coordinates_reader
@@ -91,7 +80,18 @@ struct Coordinates_reader
   }
 };
 
-// `point(i, x, y)` sets x and y to the coordinates of the point of index i.
+// Writes to `out` the indices in [first, last) sorted along a serpentine grid over the
+// bounding box of their points, about four points a cell, rows alternately left to right and
+// right to left, so that consecutive indices name nearby points; then sorts each crowded cell
+// the same way over its own box, up to max_grid_depth. Cells far above their share (clusters, a density varying by orders of
+// magnitude) need it: a build of 1e6 points of density varying 10^8 times across the square
+// (x = u^4, y = v^4) took 1.6 times CGAL's time without, 0.8 times with. With
+// `biased_rounds` (depth 0 only), the points are first dealt into rounds (round r with
+// probability 7/8^(r+1), fixed seed), listed from the sparsest, each round in grid order.
+//
+// With `parallel` (no biased rounds: their random draws are sequential), the bounding box and
+// the sort run on TBB's threads (counting_sort()), with the same order. `point(i, x, y)` sets x
+// and y to the coordinates of the point of index i (a Coordinates_reader).
 template <class Parallel = std::false_type, class Reader>
 void sort_serpentine(const std::uint32_t* first, const std::uint32_t* last, std::uint32_t* out, const Reader& point,
                      bool biased_rounds, int depth, Parallel in_parallel = Parallel())

@@ -5,8 +5,8 @@
 // A reference to a callable, called through one function pointer. Code that takes a
 // Function_ref instead of a template parameter is compiled once, whatever the type of the
 // callable each call site passes (every lambda has a type of its own), at the cost of an
-// indirect call: for code whose calls do not dominate its time (a sort that reads a point
-// per call, a count at the end of a call), so that a program compiles it once.
+// indirect call: for code off the hot loops (a count at the end of a call), so that a program
+// compiles it once.
 
 #ifndef CGAL_DELAUNAY_FROM_PREDICTION_INTERNAL_TOOLBOX_FUNCTION_REF_H
 #define CGAL_DELAUNAY_FROM_PREDICTION_INTERNAL_TOOLBOX_FUNCTION_REF_H
