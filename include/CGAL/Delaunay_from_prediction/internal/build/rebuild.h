@@ -15,6 +15,7 @@
 #define CGAL_DELAUNAY_FROM_PREDICTION_INTERNAL_BUILD_REBUILD_H
 
 #include <CGAL/Delaunay_from_prediction/Statistics.h>
+#include <CGAL/Delaunay_from_prediction/internal/toolbox/code_size.h>
 #include <CGAL/Delaunay_from_prediction/internal/toolbox/concurrency.h>
 #include <CGAL/Delaunay_from_prediction/internal/toolbox/hash_map.h>
 #include <CGAL/Delaunay_from_prediction/internal/toolbox/predicates.h>
@@ -41,6 +42,17 @@ namespace CGAL {
 namespace Delaunay_from_prediction {
 namespace internal {
 
+// The vertex of each rank of a flat triangulation, handles[order[k]] (handles[k] without an
+// order): one type for the writes of a program, so that Flat_delaunay::write_faces() is
+// compiled once (code_size.h).
+template <class Vertex_handle>
+struct Vertex_of_rank
+{
+  const Vertex_handle* handles;
+  const std::size_t* order; // may be null
+  Vertex_handle operator()(std::uint32_t k) const { return order != nullptr ? handles[order[k]] : handles[k]; }
+};
+
 // Writes the flat triangulation of all n stored ranks into `dt` (no vertex): a vertex per
 // representative rank, then on_vertex(index_of(rank), vertex, is_new) for every rank, the
 // representatives first.
@@ -54,7 +66,8 @@ void write_flat_triangulation(DT& dt, const Flat_delaunay<Gt>& flat, std::size_t
       vertex[k] = dt.tds().create_vertex();
       vertex[k]->set_point(flat.point(std::uint32_t(k)));
     }
-  flat.write_faces(dt.tds(), dt.infinite_vertex(), [&](std::uint32_t k) { return vertex[k]; });
+  flat.write_faces(dt.tds(), dt.infinite_vertex(),
+                   Vertex_of_rank<typename DT::Vertex_handle>{vertex.data(), nullptr});
   for(std::size_t k = 0; k < n; ++k) // the new vertices first: a duplicate may have the smaller rank
     if(flat.representative(k) == k)
       on_vertex(index_of(k), vertex[k], true);
@@ -62,6 +75,16 @@ void write_flat_triangulation(DT& dt, const Flat_delaunay<Gt>& flat, std::size_t
     if(flat.representative(k) != k)
       on_vertex(index_of(k), vertex[flat.representative(k)], false);
 }
+
+// The points of an insertion order, points[order[k]]: one type for the flat builds of a
+// program, so that Flat_delaunay::build() is compiled once (code_size.h).
+template <class PointIterator>
+struct Points_in_order
+{
+  PointIterator points;
+  const std::size_t* order;
+  decltype(auto) operator()(std::size_t k) const { return points[order[k]]; }
+};
 
 // Builds DT(points[indices[0]], points[indices[1]], ...) into `dt`, which holds no vertex, on
 // flat arrays (flat_insertion.h), inserted in the order of `indices`: the vertices are created
@@ -75,7 +98,7 @@ bool build_on_flat_arrays(DT& dt, PointIterator points, const std::vector<std::s
   CGAL_precondition(dt.number_of_vertices() == 0);
   const std::size_t n = indices.size();
   Flat_delaunay<typename DT::Geom_traits> flat(dt.geom_traits());
-  if(!flat.build(n, [&](std::size_t k) -> decltype(points[0]) { return points[indices[k]]; }))
+  if(!flat.build(n, Points_in_order<PointIterator>{points, indices.data()}))
     return false;
   write_flat_triangulation(dt, flat, n, [&](std::size_t k) { return indices[k]; }, on_vertex);
   return true;
@@ -306,6 +329,40 @@ void build_with_exact_predicates(DT& dt, PointIterator points, std::size_t n, St
   stats.outcome = Outcome::inexact_predicates;
 }
 
+// The exception of rebuild_keeping_vertices() for two vertices at one point, built out of
+// line (code_size.h).
+[[noreturn]] CGAL_DFP_RARELY_RUN inline void throw_vertices_at_one_point(std::size_t i, std::size_t j, double x,
+                                                                        double y)
+{
+  std::ostringstream msg;
+  msg << "Delaunay_from_prediction::make_delaunay: vertices " << (std::min)(i, j) << " and " << (std::max)(i, j)
+      << " (in finite-vertex order) are both at (" << x << ", " << y << ")";
+  throw Invalid_prediction(msg.str());
+}
+
+// rebuild_keeping_vertices() for points that span no triangle (dimension 0 or 1): inserted
+// one by one aside, then transplanted. `duplicates(i, j)` throws for two vertices at one point.
+template <class Triangulation, class Duplicates>
+CGAL_DFP_RARELY_RUN void rebuild_collinear_keeping_vertices(
+    Triangulation& tr, const std::vector<typename Triangulation::Vertex_handle>& vertices,
+    const typename Triangulation::Point* points, std::vector<std::size_t>& indices, Duplicates duplicates)
+{
+  // On tr's own data structure: for a Delaunay_triangulation_2, tr's own type, so that no
+  // second triangulation type is compiled for this rare case.
+  using Line = Delaunay_triangulation_2<typename Triangulation::Geom_traits,
+                                        typename Triangulation::Triangulation_data_structure>;
+  Line line(tr.geom_traits());
+  Hash_map<const void*, std::size_t> index_of(2 * indices.size() + 16);
+  insert_by_index(line, points, indices, [&](std::size_t i, auto v, bool is_new) {
+    if(!is_new)
+      duplicates(i, *index_of.find(&*v)); // throws; tr untouched
+    index_of.insert(&*v, i);
+  });
+  transplant(line, tr, [&](typename Line::Vertex_handle v) {
+    return v == line.infinite_vertex() ? tr.infinite_vertex() : vertices[*index_of.find(&*v)];
+  });
+}
+
 // Replaces the faces of `tr` by those of DT(its vertices), keeping every vertex object (so
 // vertex handles and info() survive). The new triangulation is built on flat arrays and
 // written into tr's own face objects (Flat_delaunay::write_faces(); dimensions 0 and 1: built
@@ -328,10 +385,6 @@ bool rebuild_keeping_vertices(Triangulation& tr, Statistics& stats, BuildAside b
   using Aside_tds = Triangulation_data_structure_2<Triangulation_vertex_base_with_info_2<std::size_t, Gt>,
                                                    Triangulation_face_base_with_info_2<std::size_t, Gt>>;
   using Aside = Delaunay_triangulation_2<Gt, Aside_tds>;
-  // The triangulation of collinear points (dimension 0 or 1), on tr's own data structure: for
-  // a Delaunay_triangulation_2, tr's own type, so that no second triangulation type is
-  // compiled for this rare case.
-  using Line = Delaunay_triangulation_2<Gt, typename Triangulation::Triangulation_data_structure>;
 
   std::vector<Vertex_handle> vertices;
   std::vector<Point> points;
@@ -345,12 +398,9 @@ bool rebuild_keeping_vertices(Triangulation& tr, Statistics& stats, BuildAside b
   if(n == 0)
     return true;
 
+  const Point* point_at = points.data();
   auto duplicates = [&](std::size_t i, std::size_t j) {
-    std::ostringstream msg;
-    msg << "Delaunay_from_prediction::make_delaunay: vertices " << (std::min)(i, j) << " and "
-        << (std::max)(i, j) << " (in finite-vertex order) are both at ("
-        << CGAL::to_double(points[i].x()) << ", " << CGAL::to_double(points[i].y()) << ")";
-    throw Invalid_prediction(msg.str());
+    throw_vertices_at_one_point(i, j, CGAL::to_double(points[i].x()), CGAL::to_double(points[i].y()));
   };
   std::vector<std::size_t> indices(n);
   for(std::size_t i = 0; i < n; ++i)
@@ -373,7 +423,7 @@ bool rebuild_keeping_vertices(Triangulation& tr, Statistics& stats, BuildAside b
   if constexpr(decides_by_exact_predicates<Gt>::value) {
     // Faces decided by exact predicates (build_deciding()): the same vertex objects, none lost.
     Deciding_dt exact;
-    build_deciding(exact, points.data(), n, duplicates); // only where rounding to double merged two points
+    build_deciding(exact, point_at, n, duplicates); // only where rounding to double merged two points
     transplant(exact, tr, [&](Deciding_dt::Vertex_handle v) {
       return v == exact.infinite_vertex() ? tr.infinite_vertex() : vertices[v->info()];
     });
@@ -393,26 +443,16 @@ bool rebuild_keeping_vertices(Triangulation& tr, Statistics& stats, BuildAside b
     if(!or_by_insertion)
       return false;
     // On flat arrays (flat_insertion.h), written into tr's own face objects.
-    sort_along_grid(indices, Point_of_index<const Point*>{points.data()}, true);
+    sort_along_grid(indices, Point_of_index<const Point*>{point_at}, true);
     Flat_delaunay<Gt> flat(tr.geom_traits());
-    if(flat.build(n, [&](std::size_t k) -> const Point& { return points[indices[k]]; })) {
+    if(flat.build(n, Points_in_order<const Point*>{point_at, indices.data()})) {
       for(std::size_t k = 0; k < n; ++k)
         if(flat.representative(k) != k)
           duplicates(indices[flat.representative(k)], indices[k]); // throws; tr untouched
-      flat.write_faces(tr.tds(), tr.infinite_vertex(), [&](std::uint32_t k) { return vertices[indices[k]]; });
+      flat.write_faces(tr.tds(), tr.infinite_vertex(), Vertex_of_rank<Vertex_handle>{vertices.data(), indices.data()});
       return true;
     }
-    // Dimension 0 or 1: inserted one by one aside, then transplanted.
-    Line line(tr.geom_traits());
-    Hash_map<const void*, std::size_t> index_of(2 * n + 16);
-    insert_by_index(line, points.data(), indices, [&](std::size_t i, auto v, bool is_new) {
-      if(!is_new)
-        duplicates(i, *index_of.find(&*v)); // throws; tr untouched
-      index_of.insert(&*v, i);
-    });
-    transplant(line, tr, [&](typename Line::Vertex_handle v) {
-      return v == line.infinite_vertex() ? tr.infinite_vertex() : vertices[*index_of.find(&*v)];
-    });
+    rebuild_collinear_keeping_vertices(tr, vertices, point_at, indices, duplicates);
   }
   return true;
 }

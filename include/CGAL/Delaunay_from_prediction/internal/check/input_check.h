@@ -10,6 +10,7 @@
 #define CGAL_DELAUNAY_FROM_PREDICTION_INTERNAL_CHECK_INPUT_CHECK_H
 
 #include <CGAL/Delaunay_from_prediction/Statistics.h>
+#include <CGAL/Delaunay_from_prediction/internal/toolbox/code_size.h>
 #include <CGAL/Delaunay_from_prediction/internal/toolbox/concurrency.h>
 #include <CGAL/Delaunay_from_prediction/internal/toolbox/predicates.h>
 #include <CGAL/number_utils.h>
@@ -22,6 +23,7 @@
 #include <limits>
 #include <ostream>
 #include <sstream>
+#include <string>
 #include <tuple>
 #include <type_traits>
 #include <utility>
@@ -58,18 +60,41 @@ void write_coordinates(std::ostream& out, const Point& p)
   out << "(" << CGAL::to_interval(p.x()).first << ", " << CGAL::to_interval(p.y()).first << ")";
 }
 
+// The messages of the exceptions below, built out of line: one copy in a program, whatever
+// the types of the points and indices (code_size.h).
+[[noreturn]] CGAL_DFP_RARELY_RUN inline void throw_non_finite(const char* what, std::size_t k, const char* order,
+                                                             double x, double y)
+{
+  std::ostringstream msg;
+  msg << "Delaunay_from_prediction: " << what << " " << k << order << " has a non-finite coordinate (" << x << ", "
+      << y << ")";
+  throw Invalid_prediction(msg.str());
+}
+[[noreturn]] CGAL_DFP_RARELY_RUN inline void throw_index_out_of_range(const char* item, std::size_t k,
+                                                                     const std::string& raw, const char* slot,
+                                                                     int j, std::size_t n)
+{
+  std::ostringstream msg;
+  msg << "Delaunay_from_prediction: " << item << " " << k << " has index " << raw << " (" << slot << " " << j
+      << "), outside the point range [0, " << n << ")";
+  throw Invalid_prediction(msg.str());
+}
+[[noreturn]] CGAL_DFP_RARELY_RUN inline void throw_repeated_index(std::size_t k, const std::size_t v[3], int j)
+{
+  std::ostringstream msg;
+  msg << "Delaunay_from_prediction: face " << k << " repeats index " << v[j] << " (" << v[0] << ", " << v[1] << ", "
+      << v[2] << ")";
+  throw Invalid_prediction(msg.str());
+}
+
 // Throws if a coordinate of any point is not finite (NaN or infinite).
 template <class PointIterator>
 void check_points_are_finite(PointIterator points, std::size_t n)
 {
   for(std::size_t i = 0; i < n; ++i) {
     const auto& p = points[i];
-    if(!is_finite_point(p)) {
-      std::ostringstream msg;
-      msg << "Delaunay_from_prediction: point " << i << " has a non-finite coordinate ";
-      write_coordinates(msg, p);
-      throw Invalid_prediction(msg.str());
-    }
+    if(!is_finite_point(p))
+      throw_non_finite("point", i, "", CGAL::to_interval(p.x()).first, CGAL::to_interval(p.y()).first);
   }
 }
 
@@ -81,13 +106,10 @@ void check_vertices_are_finite(const Triangulation& tr)
 {
   std::size_t rank = 0;
   for(auto v = tr.finite_vertices_begin(); v != tr.finite_vertices_end(); ++v, ++rank) {
-    if(!is_finite_point(v->point())) {
-      std::ostringstream msg;
-      msg << "Delaunay_from_prediction: vertex " << rank
-          << " (in finite-vertex order) has a non-finite coordinate ";
-      write_coordinates(msg, v->point());
-      throw Invalid_prediction(msg.str());
-    }
+    const auto& p = v->point();
+    if(!is_finite_point(p))
+      throw_non_finite("vertex", rank, " (in finite-vertex order)", CGAL::to_interval(p.x()).first,
+                       CGAL::to_interval(p.y()).first);
   }
 }
 
@@ -102,12 +124,8 @@ std::size_t checked_index(const Raw raw, std::size_t n, const char* item, std::s
     out_of_range = raw < 0 || static_cast<unsigned long long>(raw) >= n;
   else
     out_of_range = static_cast<unsigned long long>(raw) >= n;
-  if(out_of_range) {
-    std::ostringstream msg;
-    msg << "Delaunay_from_prediction: " << item << " " << k << " has index " << +raw << " (" << slot << " " << j
-        << "), outside the point range [0, " << n << ")";
-    throw Invalid_prediction(msg.str());
-  }
+  if(out_of_range)
+    throw_index_out_of_range(item, k, std::to_string(+raw), slot, j, n);
   return static_cast<std::size_t>(raw);
 }
 
@@ -119,12 +137,8 @@ void read_face(const Face& face, std::size_t k, std::size_t n, std::size_t out[3
   for(int j = 0; j < 3; ++j)
     out[j] = checked_index(face[j], n, "face", k, "position", j);
   for(int j = 0; j < 3; ++j)
-    if(out[j] == out[ccw(j)]) {
-      std::ostringstream msg;
-      msg << "Delaunay_from_prediction: face " << k << " repeats index " << out[j] << " ("
-          << out[0] << ", " << out[1] << ", " << out[2] << ")";
-      throw Invalid_prediction(msg.str());
-    }
+    if(out[j] == out[ccw(j)])
+      throw_repeated_index(k, out, j);
 }
 
 // Reads and validates every face (read_face()) into `triples`, three 32-bit indices a face.

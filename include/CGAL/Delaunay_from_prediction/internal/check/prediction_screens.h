@@ -9,7 +9,9 @@
 #ifndef CGAL_DELAUNAY_FROM_PREDICTION_INTERNAL_CHECK_PREDICTION_SCREENS_H
 #define CGAL_DELAUNAY_FROM_PREDICTION_INTERNAL_CHECK_PREDICTION_SCREENS_H
 
+#include <CGAL/Delaunay_from_prediction/internal/toolbox/code_size.h>
 #include <CGAL/Delaunay_from_prediction/internal/toolbox/hash_map.h>
+#include <CGAL/Delaunay_from_prediction/internal/toolbox/predicates.h>
 #include <CGAL/Delaunay_from_prediction/internal/toolbox/random.h>
 
 #include <CGAL/enum.h>
@@ -94,7 +96,7 @@ bool failing_edges_exceed(PointIterator points, std::size_t n, const std::vector
   constexpr std::size_t windows = 8;
   // A sixty-fourth of the faces, between 256 and 1024 per window.
   const std::size_t window_faces = (std::min)(std::size_t(1024), (std::max)(std::size_t(256), F / (64 * windows)));
-  Hash_map<std::uint64_t, std::uint32_t> apex_of(4 * window_faces); // half-edge (a, b) -> c of face abc
+  Hash_map<std::uint64_t, std::uint64_t> apex_of(4 * window_faces); // half-edge (a, b) -> c of face abc
   auto key = [](std::uint32_t a, std::uint32_t b) { return (std::uint64_t(a) << 32) | b; };
   auto x = [&](std::uint32_t v) { return CGAL::to_double(points[v].x()); };
   auto y = [&](std::uint32_t v) { return CGAL::to_double(points[v].y()); };
@@ -111,8 +113,9 @@ bool failing_edges_exceed(PointIterator points, std::size_t n, const std::vector
         std::swap(v[1], v[2]);
       for(int j = 0; j < 3; ++j) {
         const std::uint32_t a = v[j], b = v[(j + 1) % 3], c = v[(j + 2) % 3];
-        std::uint32_t d;
-        if(apex_of.take(key(b, a), d)) { // the face on the other side of edge ab
+        std::uint64_t apex;
+        if(apex_of.take(key(b, a), apex)) { // the face on the other side of edge ab
+          const std::uint32_t d = std::uint32_t(apex);
           // In-circle determinant of d against the counterclockwise face abc, d at the origin.
           const double ax = x(a) - x(d), ay = y(a) - y(d), bx = x(b) - x(d), by = y(b) - y(d);
           const double cx = x(c) - x(d), cy = y(c) - y(d);
@@ -130,6 +133,41 @@ bool failing_edges_exceed(PointIterator points, std::size_t n, const std::vector
   if(tested < 1024)
     return false;
   return double(failing) * 1.5 * double(F) > double(limit) * double(tested);
+}
+
+// Whether at most `max_hull` of `candidates` (sorted here) lie on the boundary of their
+// convex hull, exactly, with the traits' predicates: the hull of the candidates (Andrew's
+// monotone chain), then the candidates on its boundary (vertices and points on its edges,
+// which are hull vertices of a triangulation too). Rarely run: only when many points lie
+// near the hull (missing_faces_exceed()).
+template <class Gt, class Point>
+CGAL_DFP_RARELY_RUN bool hull_points_at_most(const Gt& gt, std::vector<Point>& candidates, std::size_t max_hull)
+{
+  auto orientation = orientation_called_out_of_line(gt);
+  auto compare_xy = compare_xy_called_out_of_line(gt);
+  std::sort(candidates.begin(), candidates.end(),
+            [&](const Point& p, const Point& q) { return compare_xy(p, q) == SMALLER; });
+  std::vector<const Point*> hull;
+  for(int pass = 0; pass < 2; ++pass) { // lower chain left to right, upper right to left
+    const std::size_t base = hull.size();
+    for(std::size_t k = 0; k < candidates.size(); ++k) {
+      const Point& p = candidates[pass == 0 ? k : candidates.size() - 1 - k];
+      while(hull.size() >= base + 2 && orientation(*hull[hull.size() - 2], *hull.back(), p) != LEFT_TURN)
+        hull.pop_back();
+      hull.push_back(&p);
+    }
+    hull.pop_back(); // the last point starts the other chain
+  }
+  if(hull.size() < 3 || hull.size() > max_hull)
+    return false;
+  std::size_t h = 0;
+  for(const Point& p : candidates)
+    for(std::size_t k = 0; k < hull.size(); ++k)
+      if(orientation(*hull[k], *hull[(k + 1) % hull.size()], p) == COLLINEAR) {
+        ++h;
+        break;
+      }
+  return h <= max_hull;
 }
 
 // Whether the faces surely lack more than `limit` faces of a triangulation of the points
@@ -220,34 +258,7 @@ bool missing_faces_exceed(const Gt& gt, PointIterator points, std::size_t n, con
     return false;
   if(candidates.size() <= max_hull)
     return true;
-  // h exactly, with the traits' predicates: the hull of the candidates (Andrew's monotone
-  // chain), then the candidates on its boundary (vertices and points on its edges, which
-  // are hull vertices of a triangulation too).
-  auto orientation = gt.orientation_2_object();
-  auto compare_xy = gt.compare_xy_2_object();
-  std::sort(candidates.begin(), candidates.end(),
-            [&](const Point& p, const Point& q) { return compare_xy(p, q) == SMALLER; });
-  std::vector<const Point*> hull;
-  for(int pass = 0; pass < 2; ++pass) { // lower chain left to right, upper right to left
-    const std::size_t base = hull.size();
-    for(std::size_t k = 0; k < candidates.size(); ++k) {
-      const Point& p = candidates[pass == 0 ? k : candidates.size() - 1 - k];
-      while(hull.size() >= base + 2 && orientation(*hull[hull.size() - 2], *hull.back(), p) != LEFT_TURN)
-        hull.pop_back();
-      hull.push_back(&p);
-    }
-    hull.pop_back(); // the last point starts the other chain
-  }
-  if(hull.size() < 3 || hull.size() > max_hull)
-    return false;
-  std::size_t h = 0;
-  for(const Point& p : candidates)
-    for(std::size_t k = 0; k < hull.size(); ++k)
-      if(orientation(*hull[k], *hull[(k + 1) % hull.size()], p) == COLLINEAR) {
-        ++h;
-        break;
-      }
-  return h <= max_hull;
+  return hull_points_at_most(gt, candidates, max_hull);
 }
 
 } // namespace internal

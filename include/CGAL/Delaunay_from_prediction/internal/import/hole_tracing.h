@@ -25,6 +25,7 @@
 
 #include <array>
 #include <cstddef>
+#include <type_traits>
 #include <vector>
 
 namespace CGAL {
@@ -50,7 +51,7 @@ bool clip_ears(const Gt& gt, std::size_t m, PointOf point, std::vector<std::arra
   ears.clear();
   if(m < 3)
     return false;
-  auto orientation = gt.orientation_2_object();
+  auto orientation = orientation_called_out_of_line(gt);
   prev.resize(m);
   next.resize(m);
   for(std::size_t p = 0; p < m; ++p) {
@@ -134,7 +135,9 @@ void split_at_repeated_vertices(const std::vector<std::size_t>& cycle, TailOf ta
       stack.push_back(h);
     }
   } else {
-    Hash_map<decltype(tail(cycle[0])), std::size_t> at;
+    // Integer tails keyed as 64-bit integers: one table type with the importer's (code_size.h).
+    using Tail = decltype(tail(cycle[0]));
+    Hash_map<std::conditional_t<std::is_pointer<Tail>::value, Tail, std::uint64_t>, std::size_t> at;
     for(const std::size_t h : cycle) {
       const auto v = tail(h);
       std::size_t* seen = at.insert(v, stack.size()).first;

@@ -25,6 +25,7 @@
 #include <CGAL/Delaunay_from_prediction/internal/import/hole_tracing.h>
 #include <CGAL/Delaunay_from_prediction/internal/import/open_halfedges.h>
 #include <CGAL/Delaunay_from_prediction/Statistics.h>
+#include <CGAL/Delaunay_from_prediction/internal/repair/sort_addresses.h>
 #include <CGAL/Delaunay_from_prediction/internal/toolbox/predicates.h>
 #include <CGAL/Delaunay_from_prediction/internal/import/spatial_order.h>
 #include <CGAL/Delaunay_from_prediction/internal/toolbox/vertex_info.h>
@@ -718,7 +719,7 @@ private:
   // import after its half-edge `conflict` met a twin on the same side: its half-edges before
   // `conflict` are unlinked (their twins reopened) or closed, the in-circle results on them
   // dropped, and the face and the vertices it created deleted.
-  void drop_face(Face_handle f, const std::uint32_t v[3], int conflict, const bool created[3],
+  CGAL_DFP_RARELY_RUN void drop_face(Face_handle f, const std::uint32_t v[3], int conflict, const bool created[3],
                  const Vertex_handle w[3], Open_halfedges& open, std::size_t tests_before)
   {
     auto& tds = tr_.tds();
@@ -774,7 +775,7 @@ private:
     std::vector<char>& closed_by_fill = done; // reused: every entry is 1 after the planning
     std::fill(closed_by_fill.begin(), closed_by_fill.end(), 0);
     fill_planned_holes(points, halfedges, plan, closed_by_fill);
-    std::sort(out_.filled_faces.begin(), out_.filled_faces.end());
+    sort_by_address(out_.filled_faces);
     std::size_t left = 0;
     for(std::size_t k = 0; k < m; ++k)
       if(!closed_by_fill[k])

@@ -260,7 +260,7 @@ private:
   std::vector<const void*> hull_faces_;            // finite faces made by convexify_hull()
   bool flip_inline_;
   Inline_flips<Triangulation> inline_flips_;
-  std::unique_ptr<T_division_repair<Triangulation>> regions_;
+  Pointer_if_compiled<T_division_repair<Triangulation>, Paths::has(Strategy::t_division)> regions_;
   std::unique_ptr<Carve_repair<Triangulation>> carve_;
 };
 

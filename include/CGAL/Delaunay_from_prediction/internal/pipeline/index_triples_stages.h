@@ -225,7 +225,7 @@ public:
   {
     stats_.points_unused = imported_.unused_points.size();
     insert_points(result_, point_at_, imported_.unused_points, stats_, &new_vertices_);
-    std::sort(new_vertices_.begin(), new_vertices_.end());
+    sort_by_address(new_vertices_);
     return Outcome::ok;
   }
 
@@ -314,7 +314,7 @@ private:
 
   bool filled_by_import(const void* f) const
   {
-    return std::binary_search(imported_.filled_faces.begin(), imported_.filled_faces.end(), f);
+    return contains_address(imported_.filled_faces, f);
   }
   bool made_by_repair(const void* f) const
   {
@@ -386,11 +386,11 @@ private:
       modified_.push_back(&*f);
     sort_unique_addresses(modified_);
     auto is_new = [&](const Vertex_handle v) {
-      return std::binary_search(new_vertices_.begin(), new_vertices_.end(), static_cast<const void*>(&*v));
+      return contains_address(new_vertices_, static_cast<const void*>(&*v));
     };
     std::size_t kept = 0;
     for(auto f = result_.finite_faces_begin(); f != result_.finite_faces_end(); ++f)
-      if(!std::binary_search(modified_.begin(), modified_.end(), static_cast<const void*>(&*f)) &&
+      if(!contains_address(modified_, static_cast<const void*>(&*f)) &&
          !made_by_repair(&*f) && !is_new(f->vertex(0)) && !is_new(f->vertex(1)) && !is_new(f->vertex(2)))
         ++kept;
     return kept;
@@ -408,7 +408,7 @@ private:
   bool fits_ = true;
   Imported_prediction<DT> imported_;
   std::unique_ptr<Carve_repair<DT>> carve_;
-  std::unique_ptr<T_division_repair<DT>> regions_;
+  Pointer_if_compiled<T_division_repair<DT>, Paths::has(Strategy::t_division)> regions_;
   std::vector<const void*> modified_;   // predicted faces changed by a repair
   std::vector<Face_handle> touched_;    // faces flipped
   std::vector<const void*> new_vertices_; // the unused points inserted

@@ -27,7 +27,9 @@
 #include <cstddef>
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <type_traits>
+#include <utility>
 
 namespace CGAL {
 namespace Delaunay_from_prediction {
@@ -94,6 +96,19 @@ constexpr std::uint32_t strategies_compiled()
   else
     return ~std::uint32_t(0);
 }
+
+// A stage's helper object that only strategy `s` makes (the t-division's): a std::unique_ptr
+// where the call compiles `s`, elsewhere a pointer that is always null, so that neither the
+// helper's destructor nor what it owns (the t-division's own triangulation type) is compiled.
+template <class T>
+struct Null_pointer
+{
+  explicit operator bool() const { return false; }
+  T* operator->() const { return nullptr; }
+  void reset() {}
+};
+template <class T, bool compiled>
+using Pointer_if_compiled = std::conditional_t<compiled, std::unique_ptr<T>, Null_pointer<T>>;
 
 template <class NamedParameters, bool Parallel>
 using Compiled_paths_of = Compiled_paths<strategies_compiled<NamedParameters>(), Parallel>;
@@ -253,6 +268,7 @@ Outcome use_prediction(Stages& stages, const Pipeline_options& options, const St
 // Every stage is reported to `visitor` as it begins and ends, on this thread (visitor.h).
 // Throws Invalid_prediction from the check, or from the rebuild for two points at the same
 // place, with the caller's data as it was.
+// `stages` are spent: their Statistics are moved out.
 template <class Stages, class Visitor>
 Statistics run_prediction_pipeline(Stages& stages, const Pipeline_options& options, Visitor& visitor)
 {
@@ -260,14 +276,14 @@ Statistics run_prediction_pipeline(Stages& stages, const Pipeline_options& optio
   const Stage_runner<Visitor> run{visitor};
   run(Stage::check, [&] { return stages.check(); });
   if(stages.is_empty())
-    return stats;
+    return std::move(stats);
   // Inexact predicates (toolbox/predicates.h): flips, walks and certificates could cycle or
   // corrupt; the triangulation is built from scratch, decided by exact predicates.
   Outcome why = Outcome::inexact_predicates;
   if constexpr(Stages::decides_exactly)
     why = use_prediction(stages, options, run);
   if(why == Outcome::ok)
-    return stats;
+    return std::move(stats);
   run(Stage::rebuild, [&] {
     stats.fell_back = true;
     stats.outcome = why;
@@ -279,7 +295,7 @@ Statistics run_prediction_pipeline(Stages& stages, const Pipeline_options& optio
     stages.rebuild();
     return why;
   });
-  return stats;
+  return std::move(stats);
 }
 
 } // namespace internal

@@ -35,6 +35,7 @@
 #include <CGAL/Delaunay_from_prediction/Statistics.h>
 #include <CGAL/Delaunay_from_prediction/internal/repair/duplicate_vertices.h>
 #include <CGAL/Delaunay_from_prediction/internal/repair/flips.h>
+#include <CGAL/Delaunay_from_prediction/internal/toolbox/function_ref.h>
 #include <CGAL/Delaunay_from_prediction/internal/toolbox/hash_map.h>
 #include <CGAL/Delaunay_from_prediction/internal/import/hole_tracing.h>
 #include <CGAL/Delaunay_from_prediction/internal/build/insertion.h>
@@ -214,7 +215,7 @@ public:
   // After commit() (and a failed finish_hull()): restores the triangulation as it was before
   // commit(): same vertices, same connectivity (new face objects: the faces of `log` that
   // were carved are replaced by the new objects, which have the same slots).
-  void rollback(Flip_log<Triangulation>& log)
+  CGAL_DFP_RARELY_RUN void rollback(Flip_log<Triangulation>& log)
   {
     CGAL_precondition(keep_undo_log_ && committed_);
     for(const Face_handle f : created_)
@@ -250,9 +251,10 @@ public:
   // Reinserts the carved vertices, keeping each vertex object (reinsert_vertex_objects()).
   // `on_duplicate(v, w)` is called when v's point is already the point of vertex w (v is
   // then deleted by the callee or left detached: it is not reinserted). Faces of the
-  // prediction that insertion modifies go to `modified`.
-  template <class OnDuplicate>
-  void reinsert(std::vector<Edge>& stack, std::vector<const void*>& modified, OnDuplicate on_duplicate)
+  // prediction that insertion modifies go to `modified`. (`on_duplicate` is a Function_ref:
+  // it is rarely called, and each caller's lambda would compile the reinsertion again.)
+  void reinsert(std::vector<Edge>& stack, std::vector<const void*>& modified,
+                Function_ref<void(Vertex_handle, Vertex_handle)> on_duplicate)
   {
     created_set_.reserve(created_set_.size() + 6 * detached_.size()); // about 6 faces around each
     reinsert_vertex_objects(
@@ -416,7 +418,7 @@ private:
   }
 
   // The faces around `v`, which may have open (null) neighbours in the importer's TDS.
-  void faces_around(Vertex_handle v, std::vector<Face_handle>& out) const
+  CGAL_DFP_OUT_OF_LINE void faces_around(Vertex_handle v, std::vector<Face_handle>& out) const
   {
     out.clear();
     const Face_handle start = v->face();
@@ -441,7 +443,7 @@ private:
       remove(f);
   }
 
-  void remove(Face_handle f)
+  CGAL_DFP_OUT_OF_LINE void remove(Face_handle f)
   {
     if(!removed_.insert(&*f, removed_list_.size()).second)
       return;
@@ -471,7 +473,7 @@ private:
     traced_ = removed_list_.size();
     const bool outer_is_open = outer_open_; // widening below may open it: traced next round
 
-    Address_table<char> changed; // vertices of faces carved this round
+    Address_table<std::size_t> changed; // vertices of faces carved this round
     std::vector<std::size_t> to_trace;
     open_halfedges_of_carved(first_new, changed, to_trace);
     retire_changed_loops(changed, to_trace);
@@ -514,7 +516,7 @@ private:
   // The faces carved from removed_list_[first_new] on: their half-edges that were open
   // close, those of kept neighbours open (and, in the first round, the importer's). Their
   // vertices go to `changed` when there are loops they may change.
-  void open_halfedges_of_carved(std::size_t first_new, Address_table<char>& changed,
+  void open_halfedges_of_carved(std::size_t first_new, Address_table<std::size_t>& changed,
                                 std::vector<std::size_t>& to_trace)
   {
     const bool loops_may_change = !loops_.empty(); // none in the first round
@@ -547,7 +549,7 @@ private:
   // Loops to trace again: those through a changed vertex, with every loop split from the
   // same cycle (at a split vertex the loops' successors are not next_open()'s). They die,
   // and their live half-edges go to `to_trace`.
-  void retire_changed_loops(const Address_table<char>& changed, std::vector<std::size_t>& to_trace)
+  void retire_changed_loops(const Address_table<std::size_t>& changed, std::vector<std::size_t>& to_trace)
   {
     std::vector<char> dirty_group(groups_, 0);
     for(const Loop& loop : loops_) {
@@ -621,7 +623,7 @@ private:
   Outcome classify_loops(std::vector<std::vector<std::size_t>>& cycles, const std::vector<std::size_t>& group_of_cycle,
                          const Carve_limits& limits)
   {
-    auto orientation = tr_.geom_traits().orientation_2_object();
+    auto orientation = orientation_called_out_of_line(tr_.geom_traits());
     for(std::size_t c = 0; c < cycles.size(); ++c) {
       Loop loop;
       loop.halfedges = std::move(cycles[c]);
@@ -650,9 +652,9 @@ private:
   // outer loop is the one enclosing the larger area (the island lies inside it). Taken by
   // the order of the loops (of face addresses), an island could pass for the outer loop and
   // make the real one an island, carved layer by layer past the budget.
-  bool choose_outer_loop()
+  CGAL_DFP_RARELY_RUN bool choose_outer_loop()
   {
-    auto compare_xy = tr_.geom_traits().compare_xy_2_object();
+    auto compare_xy = compare_xy_called_out_of_line(tr_.geom_traits());
     for(std::size_t l = 0; l < loops_.size(); ++l) {
       const Loop& loop = loops_[l];
       if(loop.dead || loop.turn != LEFT_TURN)
@@ -672,7 +674,7 @@ private:
 
   // The counterclockwise loops other than the outer one are islands: their faces go, layer
   // by layer (the importer's faces may then meet at a vertex in several fans).
-  void carve_islands()
+  CGAL_DFP_RARELY_RUN void carve_islands()
   {
     for(std::size_t l = 0; l < loops_.size(); ++l)
       if(!loops_[l].dead && l != outer_ && loops_[l].turn == LEFT_TURN) {
@@ -687,13 +689,13 @@ private:
   // Edges are bucketed in a grid of about one edge per cell over the loop's bounding box (by
   // their approximate bounding boxes, widened so that no meeting pair is missed), and only
   // edges sharing a cell are tested, exactly.
-  bool carve_crossings(const std::vector<std::size_t>& loop)
+  CGAL_DFP_RARELY_RUN bool carve_crossings(const std::vector<std::size_t>& loop)
   {
     const std::size_t m = loop.size();
     if(m < 4)
       return false;
-    auto orientation = tr_.geom_traits().orientation_2_object();
-    auto compare_xy = tr_.geom_traits().compare_xy_2_object();
+    auto orientation = orientation_called_out_of_line(tr_.geom_traits());
+    auto compare_xy = compare_xy_called_out_of_line(tr_.geom_traits());
     std::vector<const Point*> p(m);
     for(std::size_t k = 0; k < m; ++k)
       p[k] = &tail_point(loop[k]);
@@ -771,7 +773,7 @@ private:
   // to `o` (halves: no overflow) and scaled by a power of two that brings the largest to
   // about 1, so that the cross products neither overflow (coordinates near 1e154 and beyond)
   // nor vanish (near the smallest normal double).
-  bool encloses_more(const std::vector<std::size_t>& a, const std::vector<std::size_t>& b, const Point& o) const
+  CGAL_DFP_RARELY_RUN bool encloses_more(const std::vector<std::size_t>& a, const std::vector<std::size_t>& b, const Point& o) const
   {
     const double ox = CGAL::to_double(o.x()) / 2, oy = CGAL::to_double(o.y()) / 2;
     double largest = 0;
@@ -799,7 +801,7 @@ private:
 
   std::size_t lowest(const std::vector<std::size_t>& loop) const
   {
-    auto compare_xy = tr_.geom_traits().compare_xy_2_object();
+    auto compare_xy = compare_xy_called_out_of_line(tr_.geom_traits());
     std::size_t best = 0;
     for(std::size_t p = 1; p < loop.size(); ++p)
       if(compare_xy(tail_point(loop[p]), tail_point(loop[best])) == SMALLER)
@@ -853,7 +855,7 @@ private:
   // vertex where faces meet only at that vertex has several fans and its star reaches only
   // one. An island (a face dropped over others, a piece hanging by a vertex) loses only the
   // faces along it: its vertices usually keep their own fans.
-  void widen(const std::vector<std::size_t>& cycle, bool with_stars = true)
+  CGAL_DFP_RARELY_RUN void widen(const std::vector<std::size_t>& cycle, bool with_stars = true)
   {
     for(const std::size_t k : cycle) {
       remove(open_[k].first);
@@ -892,7 +894,7 @@ private:
   // on a cycle that shared a carved face with it, if there is one (near_).
   void collect_isolated_vertices()
   {
-    Address_table<char> listed; // 1: on a cycle, 0: detached
+    Address_table<std::size_t> listed; // 1: on a cycle, 0: detached
     for(std::size_t k = 0; k < open_.size(); ++k)
       if(alive_[k])
         listed.insert(&*tail_vertex(k), 1); // cycle vertices keep faces
@@ -906,7 +908,7 @@ private:
         detached_.push_back(v);
         near_.push_back(Vertex_handle());
         for(const int j : {ccw(i), cw(i)}) {
-          const char* on_cycle = listed.find(&*f->vertex(j));
+          const std::size_t* on_cycle = listed.find(&*f->vertex(j));
           if(on_cycle != nullptr && *on_cycle == 1) {
             near_.back() = f->vertex(j);
             break;
@@ -919,14 +921,14 @@ private:
   // vertex of carved faces may keep a whole fan elsewhere, out of reach of its open
   // half-edges. One pass over the faces left (after the carved ones are deleted) finds
   // them; they stay, pointing at a face they keep.
-  void keep_vertices_with_other_fans()
+  CGAL_DFP_RARELY_RUN void keep_vertices_with_other_fans()
   {
     if(detached_.empty())
       return;
-    Address_table<char> candidates;
+    Address_table<std::size_t> candidates;
     for(const Vertex_handle v : detached_)
       candidates.insert(&*v, 0);
-    Address_table<char> kept;
+    Address_table<std::size_t> kept;
     for(auto f = tds_.faces().begin(); f != tds_.faces().end(); ++f)
       for(int i = 0; i < 3; ++i) {
         const Vertex_handle v = f->vertex(i);
@@ -967,7 +969,7 @@ private:
   Address_table<std::size_t> removed_;   // carved face -> position in removed_list_
   std::unique_ptr<Slot_bitmap<typename Tds::Face>> carved_bitmap_; // the same set, from commit() on
   std::vector<Face_handle> removed_list_;
-  Address_table<char> detached_set_;     // vertices queued for carving their star
+  Address_table<std::size_t> detached_set_;     // vertices queued for carving their star
   std::vector<Vertex_handle> pending_, detached_;
   std::vector<Vertex_handle> near_;       // per detached vertex: a cycle vertex near it, or null
   std::vector<Edge> given_open_;
@@ -984,7 +986,7 @@ private:
   std::vector<Loop> loops_;               // the current ones are not dead
 
   std::vector<Face_handle> created_;
-  Address_table<char> created_set_;
+  Address_table<std::size_t> created_set_;
   std::vector<Undo_entry> undo_;
   // Scratch space, reused across holes.
   Hole_clipper clipper_;
@@ -1007,7 +1009,7 @@ private:
 constexpr std::size_t wound_twice_max_degree = 4096;
 
 template <class Triangulation>
-void carve_vertices_wound_twice(const Triangulation& tr, Carve_repair<Triangulation>& carve)
+CGAL_DFP_RARELY_RUN void carve_vertices_wound_twice(const Triangulation& tr, Carve_repair<Triangulation>& carve)
 {
   using Face_handle = typename Triangulation::Face_handle;
   const auto& gt = tr.geom_traits();

@@ -8,6 +8,8 @@
 #ifndef CGAL_DELAUNAY_FROM_PREDICTION_INTERNAL_REPAIR_DUPLICATE_VERTICES_H
 #define CGAL_DELAUNAY_FROM_PREDICTION_INTERNAL_REPAIR_DUPLICATE_VERTICES_H
 
+#include <CGAL/Delaunay_from_prediction/internal/toolbox/predicates.h>
+
 #include <CGAL/enum.h>
 #include <CGAL/number_utils.h>
 
@@ -80,7 +82,7 @@ bool has_duplicate_of(const Triangulation& tr,
     }
     return false;
   } else {
-    auto less = [&](const Point& a, const Point& b) { return tr.geom_traits().compare_xy_2_object()(a, b) == SMALLER; };
+    auto less = [&](const Point& a, const Point& b) { return compare_xy_out_of_line(tr.geom_traits(), a, b) == SMALLER; };
     std::vector<std::pair<Point, const void*>> sorted;
     for(const auto& v : candidates)
       sorted.emplace_back(v->point(), &*v);

@@ -58,7 +58,7 @@ template <class Gt, class Point>
 bool flip_makes_ccw_faces(const Gt& gt, const Point& a, const Point& b, const Point& c,
                           const Point& d)
 {
-  auto orientation = gt.orientation_2_object();
+  auto orientation = orientation_called_out_of_line(gt);
   return orientation(a, b, d) == LEFT_TURN && orientation(a, d, c) == LEFT_TURN;
 }
 
@@ -397,7 +397,7 @@ bool flip_in_cells(Triangulation& tr, std::vector<std::pair<typename Triangulati
 
 // Undoes the logged flips (certification's, untangle_by_flips()'s), latest first.
 template <class Triangulation>
-void undo_flips(Triangulation& tr, Flip_log<Triangulation>& log)
+CGAL_DFP_RARELY_RUN void undo_flips(Triangulation& tr, Flip_log<Triangulation>& log)
 {
   for(auto it = log.rbegin(); it != log.rend(); ++it)
     undo_flip(tr.tds(), it->first, it->second);
@@ -483,7 +483,7 @@ void untangle_faces(Triangulation& tr, const std::vector<typename Triangulation:
                     Flip_log<Triangulation>& log, std::vector<typename Triangulation::Face_handle>& touched)
 {
   using Face_handle = typename Triangulation::Face_handle;
-  auto orientation = tr.geom_traits().orientation_2_object();
+  auto orientation = orientation_called_out_of_line(tr.geom_traits());
   auto& tds = tr.tds();
   const auto infinite = tr.infinite_vertex();
   for(std::size_t k = first; k < last; ++k) {
@@ -564,7 +564,7 @@ void untangle_by_flips(Triangulation& tr, std::vector<typename Triangulation::Fa
     std::vector<Face_handle> deferred;
     untangle_faces(tr, bad, 0, bad.size(), true, Every_vertex(), deferred, stack, log, touched);
   }
-  auto orientation = tr.geom_traits().orientation_2_object();
+  auto orientation = orientation_called_out_of_line(tr.geom_traits());
   bad.erase(std::remove_if(bad.begin(), bad.end(),
                            [&](Face_handle f) {
                              return orientation(f->vertex(0)->point(), f->vertex(1)->point(),
@@ -638,7 +638,7 @@ bool convexify_hull(Triangulation& tr,
   using Face_handle = typename Triangulation::Face_handle;
   using Vertex_handle = typename Triangulation::Vertex_handle;
   auto& tds = tr.tds();
-  auto orientation = tr.geom_traits().orientation_2_object();
+  auto orientation = orientation_called_out_of_line(tr.geom_traits());
   const Vertex_handle infinite = tr.infinite_vertex();
 
   std::size_t hull_size = 0;

@@ -13,6 +13,7 @@
 #ifndef CGAL_DELAUNAY_FROM_PREDICTION_INTERNAL_REPAIR_SORT_ADDRESSES_H
 #define CGAL_DELAUNAY_FROM_PREDICTION_INTERNAL_REPAIR_SORT_ADDRESSES_H
 
+#include <CGAL/Delaunay_from_prediction/internal/toolbox/code_size.h>
 #include <CGAL/Delaunay_from_prediction/internal/toolbox/function_ref.h>
 
 #include <algorithm>
@@ -25,14 +26,30 @@ namespace CGAL {
 namespace Delaunay_from_prediction {
 namespace internal {
 
+// Sorts `addresses` by address (as integers: a total order): every sort of addresses in the
+// package, one std::sort compiled (code_size.h).
+CGAL_DFP_OUT_OF_LINE inline void sort_by_address(std::vector<const void*>& addresses)
+{
+  std::sort(addresses.begin(), addresses.end(), [](const void* a, const void* b) {
+    return reinterpret_cast<std::uintptr_t>(a) < reinterpret_cast<std::uintptr_t>(b);
+  });
+}
+
+// Whether `p` is among `sorted`, sorted by sort_by_address().
+CGAL_DFP_OUT_OF_LINE inline bool contains_address(const std::vector<const void*>& sorted, const void* p)
+{
+  return std::binary_search(sorted.begin(), sorted.end(), p, [](const void* a, const void* b) {
+    return reinterpret_cast<std::uintptr_t>(a) < reinterpret_cast<std::uintptr_t>(b);
+  });
+}
+
 // Sorts `addresses` by address and removes repeats.
 inline void sort_unique_addresses(std::vector<const void*>& addresses)
 {
   const std::size_t n = addresses.size();
   auto value = [](const void* p) { return std::uint64_t(reinterpret_cast<std::uintptr_t>(p)); };
   if(n < 4096) {
-    std::sort(addresses.begin(), addresses.end(),
-              [&](const void* a, const void* b) { return value(a) < value(b); });
+    sort_by_address(addresses);
   } else {
     // Objects of the containers sorted here are at least 8-byte aligned: the 3 low bits of
     // an offset are 0 and are skipped; addresses that differ there still sort right, by the
@@ -50,8 +67,7 @@ inline void sort_unique_addresses(std::vector<const void*>& addresses)
     while(bits < 64 && (span >> bits) != 0)
       ++bits;
     if(!aligned || bits > 48) {
-      std::sort(addresses.begin(), addresses.end(),
-                [&](const void* a, const void* b) { return value(a) < value(b); });
+      sort_by_address(addresses);
     } else {
       const int passes = std::max(1, (bits + 11) / 12);
       const int digit_bits = (bits + passes - 1) / passes;
@@ -177,9 +193,9 @@ std::size_t count_distinct(const std::vector<Face_handle>& faces,
                            std::vector<const void*> except = std::vector<const void*>())
 {
   using Face = std::remove_cv_t<std::remove_reference_t<decltype(*faces.front())>>;
-  std::sort(except.begin(), except.end());
+  sort_by_address(except);
   return count_distinct_addresses<Face>(std::vector<const void*>(), faces, 0, [&](const void* a) {
-    return !std::binary_search(except.begin(), except.end(), a);
+    return !contains_address(except, a);
   });
 }
 

@@ -554,7 +554,7 @@ private:
   std::vector<std::uint32_t> in_fill_;   // DT(V_B) face -> its position in fill_
   std::vector<Dt_face> fill_;
   std::vector<Vertex_handle> detached_;
-  Address_table<char> created_;
+  Address_table<std::size_t> created_;
   std::size_t removed_finite_ = 0, holes_ = 0;
   bool planned_ = false;
 };

@@ -13,6 +13,8 @@
 #ifndef CGAL_DELAUNAY_FROM_PREDICTION_INTERNAL_TOOLBOX_HASH_MAP_H
 #define CGAL_DELAUNAY_FROM_PREDICTION_INTERNAL_TOOLBOX_HASH_MAP_H
 
+#include <CGAL/Delaunay_from_prediction/internal/toolbox/code_size.h>
+
 #include <CGAL/assertions.h>
 
 #include <cstddef>
@@ -53,8 +55,9 @@ public:
   explicit Hash_map(std::size_t initial_capacity = 64) { resize(round_up(initial_capacity)); }
 
   // Inserts `key` with `value` if absent; returns a pointer to the stored value and whether
-  // it was inserted.
-  std::pair<Value*, bool> insert(Key key, const Value& value)
+  // it was inserted. Out of line: called from many places, where a call costs little next to
+  // the probe's cache miss (code_size.h).
+  CGAL_DFP_OUT_OF_LINE std::pair<Value*, bool> insert(Key key, const Value& value)
   {
     CGAL_precondition(key != free_key());
     if(2 * (size_ + 1) > slots_.size())
@@ -177,7 +180,9 @@ private:
   int shift_ = 64;
 };
 
-// The repairs' sets and maps of face and vertex objects, keyed by address.
+// The repairs' sets and maps of face and vertex objects, keyed by address. Sets and flags
+// take std::size_t values too: a slot is 16 bytes with a char as well, and each value type
+// is a table more that every program compiles (code_size.h).
 template <class Value>
 using Address_table = Hash_map<const void*, Value>;
 

@@ -9,6 +9,8 @@
 #ifndef CGAL_DELAUNAY_FROM_PREDICTION_INTERNAL_TOOLBOX_PREDICATES_H
 #define CGAL_DELAUNAY_FROM_PREDICTION_INTERNAL_TOOLBOX_PREDICATES_H
 
+#include <CGAL/Delaunay_from_prediction/internal/toolbox/code_size.h>
+
 #include <CGAL/Algebraic_structure_traits.h>
 #include <CGAL/Kernel_traits.h>
 #include <CGAL/enum.h>
@@ -28,6 +30,51 @@ namespace internal {
 
 inline int ccw(int i) { return i == 2 ? 0 : i + 1; }
 inline int cw(int i) { return i == 0 ? 2 : i - 1; }
+
+// The traits' orientation and lexicographic comparison called out of line, as function
+// objects with the traits' call syntax: for the code outside the hot loops (the repairs, the
+// hull, the ear clipping), where Epick's predicates would inline a copy of their static filter
+// at every call, code that every program compiles (code_size.h) for no measurable speed.
+template <class Gt, class Point>
+CGAL_DFP_OUT_OF_LINE Orientation orientation_out_of_line(const Gt& gt, const Point& p, const Point& q, const Point& r)
+{
+  return gt.orientation_2_object()(p, q, r);
+}
+template <class Gt, class Point>
+CGAL_DFP_OUT_OF_LINE Comparison_result compare_xy_out_of_line(const Gt& gt, const Point& p, const Point& q)
+{
+  return gt.compare_xy_2_object()(p, q);
+}
+template <class Gt>
+struct Orientation_out_of_line
+{
+  const Gt& gt;
+  template <class Point>
+  Orientation operator()(const Point& p, const Point& q, const Point& r) const
+  {
+    return orientation_out_of_line(gt, p, q, r);
+  }
+};
+template <class Gt>
+struct Compare_xy_out_of_line
+{
+  const Gt& gt;
+  template <class Point>
+  Comparison_result operator()(const Point& p, const Point& q) const
+  {
+    return compare_xy_out_of_line(gt, p, q);
+  }
+};
+template <class Gt>
+Orientation_out_of_line<Gt> orientation_called_out_of_line(const Gt& gt)
+{
+  return {gt};
+}
+template <class Gt>
+Compare_xy_out_of_line<Gt> compare_xy_called_out_of_line(const Gt& gt)
+{
+  return {gt};
+}
 
 // Detects kernels whose coordinates are doubles and whose predicates are exact (Epick):
 // for them side_of_oriented_circle_perturbed() first tries an inline floating-point filter.
