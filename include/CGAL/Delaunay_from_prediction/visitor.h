@@ -23,8 +23,10 @@ enum class Stage {
   /// the input checked: coordinates finite; for `delaunay_from_prediction()`, the faces read
   /// and validated into index triples.
   check,
-  /// `delaunay_from_prediction()`: the screens that may reject a prediction before the import
-  /// (sampled faces against sampled points, failing edges estimated, missing faces counted).
+  /// In the plane, the screens that may reject a prediction before any repair:
+  /// `delaunay_from_prediction()` before the import (sampled faces against sampled points,
+  /// failing edges estimated, missing faces counted), `make_delaunay()` before the certificate
+  /// (too many inverted faces foreseen from a sample).
   screen,
   /// `delaunay_from_prediction()`: the spatial reordering of the points and faces, with the
   /// copy of the points.

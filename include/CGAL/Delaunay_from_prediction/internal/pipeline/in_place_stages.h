@@ -47,6 +47,7 @@ public:
   static constexpr Parallel_constant<Paths::parallel> parallel() { return {}; }
   using Face_handle = typename Triangulation::Face_handle;
   static constexpr bool decides_exactly = !decides_by_exact_predicates<typename Triangulation::Geom_traits>::value;
+  static constexpr bool screens = true; // screen() may give the prediction up
 
   In_place_stages(Triangulation& tr, const Pipeline_options& options)
       : tr_(tr), options_(options),

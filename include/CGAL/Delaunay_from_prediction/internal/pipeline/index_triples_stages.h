@@ -65,6 +65,7 @@ public:
   using Vertex_handle = typename DT::Vertex_handle;
   using Face_handle = typename DT::Face_handle;
   static constexpr bool decides_exactly = !decides_by_exact_predicates<typename DT::Geom_traits>::value;
+  static constexpr bool screens = true; // screen() may give the prediction up
 
   Index_triples_stages(PointIterator point_at, std::size_t n, const FaceRange& faces, std::size_t number_of_faces,
                        DT& dt, const Pipeline_options& options)

@@ -245,8 +245,10 @@ Outcome use_prediction(Stages& stages, const Pipeline_options& options, const St
       why = run(Stage::region_recursion, [&] { return stages.compute_by_region_recursion(); });
     }
   }
-  if(why == Outcome::ok)
-    why = run(Stage::screen, [&] { return stages.screen(); });
+  if constexpr(Stages::screens) {
+    if(why == Outcome::ok)
+      why = run(Stage::screen, [&] { return stages.screen(); });
+  }
   if(why == Outcome::ok)
     why = stages.certify(run); // Stage::order and Stage::import, or Stage::certify
   if(why == Outcome::ok)
